@@ -1,0 +1,67 @@
+#include "batch/part_binding.h"
+
+#include <utility>
+
+#include "manyworlds/error.h"
+
+namespace manyworlds {
+
+const char* PartKindName(PartKind kind) {
+  switch (kind) {
+    case PartKind::kDualAxis: return "dual_axis";
+    case PartKind::kRackAndPinion: return "rack_and_pinion";
+  }
+  return "unknown";
+}
+
+namespace {
+
+std::string Describe(const std::string& constraint_name, PartKind kind) {
+  return "constraint '" + constraint_name + "' (" + PartKindName(kind) + " part)";
+}
+
+void CheckBodyExists(const BodyBlocks& bodies, const std::string& where,
+                     const char* field, std::size_t body) {
+  if (body >= bodies.body_count()) {
+    throw SceneError(where + ": " + field + " = " + std::to_string(body) +
+                     " does not exist (the scene has " +
+                     std::to_string(bodies.body_count()) + " bodies)");
+  }
+}
+
+}  // namespace
+
+PartBinding BindPart(const BodyBlocks& bodies, std::string constraint_name,
+                     PartKind kind, std::size_t body1, std::size_t body2) {
+  const std::string where = Describe(constraint_name, kind);
+  CheckBodyExists(bodies, where, "body1", body1);
+  CheckBodyExists(bodies, where, "body2", body2);
+  if (body1 == body2) {
+    throw SceneError(where + ": body1 and body2 are both body " +
+                     std::to_string(body1) + "; a part needs two bodies");
+  }
+  if (kind == PartKind::kRackAndPinion) {
+    // Jolt reads both bodies' motion properties, which static bodies lack.
+    const char* roles[2] = {"body1 (pinion)", "body2 (rack)"};
+    const std::size_t indices[2] = {body1, body2};
+    for (int i = 0; i < 2; ++i) {
+      if (bodies.motion_type(indices[i]) == MotionType::kStatic) {
+        throw SceneError(where + ": " + roles[i] + " = body " +
+                         std::to_string(indices[i]) +
+                         " is static; both bodies of a rack-and-pinion must be "
+                         "kinematic or dynamic");
+      }
+    }
+  }
+  return PartBinding{std::move(constraint_name), kind, body1, body2};
+}
+
+BodyPair PairInBlock(BodyBlocks& bodies, const PartBinding& binding,
+                     std::size_t block) {
+  return BodyPair{&bodies.lanes(block, binding.body1),
+                  bodies.motion_type(binding.body1),
+                  &bodies.lanes(block, binding.body2),
+                  bodies.motion_type(binding.body2)};
+}
+
+}  // namespace manyworlds

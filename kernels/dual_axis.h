@@ -1,0 +1,31 @@
+// Storage of the dual-axis part (two linear rows) for one block of worlds.
+// The maths is in dual_axis-inl.h.
+#pragma once
+
+#include "manyworlds/lanes.h"
+
+namespace manyworlds {
+
+// Per-step inputs the owning constraint computes before CalculateProperties:
+// lever arms (world) and the two unit axes n1 _|_ n2.
+struct DualAxisGeometry {
+  Vec3Lanes r1_plus_u;  // p2 - x1: body 1's lever arm reaches body 2's anchor
+  Vec3Lanes r2;         // p2 - x2
+  Vec3Lanes n1, n2;
+};
+
+// Everything the part caches between its verbs. Only `persistent` survives
+// from one step to the next; the rest is recomputed in CalculateProperties.
+struct DualAxisLanes {
+  Vec3Lanes r1_plus_u_x_n1, r1_plus_u_x_n2;  // angular Jacobian rows, body 1
+  Vec3Lanes r2_x_n1, r2_x_n2;                // angular Jacobian rows, body 2
+  Vec3Lanes inv_i1_r1_plus_u_x_n1, inv_i1_r1_plus_u_x_n2;  // zero unless dynamic
+  Vec3Lanes inv_i2_r2_x_n1, inv_i2_r2_x_n2;                // zero unless dynamic
+  Sym22Lanes effective_mass;  // K^-1; zero when deactivated
+
+  struct Persistent {
+    Vec2Lanes total_lambda;  // accumulated impulse per row
+  } persistent;
+};
+
+}  // namespace manyworlds
