@@ -34,17 +34,10 @@ LaneKind KindOfWorld(std::size_t world) {
   }
 }
 
-struct DualAxisCase {
-  const PartKernels* kernels;
-  std::size_t world_count;
-  MotionType motion1;
-  MotionType motion2;
-};
-
-class DualAxisTest : public ::testing::TestWithParam<DualAxisCase> {
+class DualAxisTest : public ::testing::TestWithParam<PartCase> {
  protected:
   void SetUp() override {
-    const DualAxisCase& c = GetParam();
+    const PartCase& c = GetParam();
     kernels_ = c.kernels;
     bodies_.emplace(std::vector<MotionType>{c.motion1, c.motion2}, c.world_count);
     binding_ = BindPart(*bodies_, "slider_sideways", PartKind::kDualAxis, 0, 1);
@@ -142,37 +135,16 @@ class DualAxisTest : public ::testing::TestWithParam<DualAxisCase> {
   // Runs one velocity-changing verb on kernel and reference, from the same
   // body state and impulse, and compares every lane. Returns per-block "any
   // lane applied" from the kernel next to the reference's.
+  PartHooks Hooks() {
+    return {[this](std::size_t w) -> Eigen::VectorXd { return Lambda(w); },
+            [this](std::size_t w) -> Eigen::VectorXd { return reference_[w].GetTotalLambda(); },
+            [this](std::size_t w) { reference_[w].SetTotalLambda(Lambda(w)); },
+            [this](std::size_t w) { return ConditionOf(w); }};
+  }
+
   template <class KernelVerb, class ReferenceVerb>
-  void CompareVerb(const char* label, KernelVerb kernel_verb,
-                   ReferenceVerb reference_verb) {
-    std::vector<RefBody> before1(worlds()), before2(worlds()), after1(worlds()),
-        after2(worlds());
-    std::vector<bool> reference_applied(bodies_->block_count(), false);
-    std::vector<Vec2d> lambda_before(worlds());
-    for (std::size_t w = 0; w < worlds(); ++w) {
-      lambda_before[w] = Lambda(w);
-      before1[w] = after1[w] = Body(w, 0);
-      before2[w] = after2[w] = Body(w, 1);
-      reference_[w].SetTotalLambda(Lambda(w));
-      if (reference_verb(w, after1[w], after2[w])) reference_applied[Block(w)] = true;
-    }
-    for (std::size_t block = 0; block < bodies_->block_count(); ++block) {
-      EXPECT_EQ(kernel_verb(block), reference_applied[block])
-          << label << ": 'any lane applied' of block " << block;
-    }
-    for (std::size_t w = 0; w < worlds(); ++w) {
-      const double condition = ConditionOf(w);
-      ExpectBodyNear(*bodies_, w, 0, before1[w], after1[w], condition, label);
-      ExpectBodyNear(*bodies_, w, 1, before2[w], after2[w], condition, label);
-      // Same scale rule as the bodies: size before and after, plus the change
-      // amplified by cond(K).
-      const Vec2d expected = reference_[w].GetTotalLambda();
-      const double lambda_scale =
-          std::max(lambda_before[w].norm(), expected.norm()) +
-          condition * (expected - lambda_before[w]).norm();
-      EXPECT_LE((Lambda(w) - expected).cwiseAbs().maxCoeff(), Tolerance(lambda_scale))
-          << label << ": total lambda of world " << w;
-    }
+  void CompareVerb(const char* label, KernelVerb kernel_verb, ReferenceVerb reference_verb) {
+    CompareVerbOnEveryLane(label, *bodies_, Hooks(), kernel_verb, reference_verb);
   }
 
   void WarmStart(float ratio) {
@@ -357,8 +329,8 @@ TEST_P(DualAxisTest, GetSetSaveRestoreOfAccumulatedImpulse) {
   }
 }
 
-std::vector<DualAxisCase> AllCases() {
-  const std::pair<MotionType, MotionType> pairings[] = {
+std::vector<PartCase> AllCases() {
+  static const std::vector<std::pair<MotionType, MotionType>> pairings = {
       {MotionType::kDynamic, MotionType::kDynamic},
       {MotionType::kDynamic, MotionType::kStatic},
       {MotionType::kStatic, MotionType::kDynamic},
@@ -366,25 +338,11 @@ std::vector<DualAxisCase> AllCases() {
       {MotionType::kDynamic, MotionType::kKinematic},
       {MotionType::kKinematic, MotionType::kStatic},
   };
-  std::vector<DualAxisCase> cases;
-  for (const PartKernels* kernels : SupportedKernels()) {
-    for (const std::size_t worlds : TestWorldCounts()) {
-      for (const auto& [motion1, motion2] : pairings) {
-        cases.push_back({kernels, worlds, motion1, motion2});
-      }
-    }
-  }
-  return cases;
-}
-
-std::string CaseName(const ::testing::TestParamInfo<DualAxisCase>& info) {
-  const DualAxisCase& c = info.param;
-  return TargetLabel(c.kernels) + "_" + std::to_string(c.world_count) + "worlds_" +
-         MotionTypeName(c.motion1) + "_" + MotionTypeName(c.motion2);
+  return AllPartCases(pairings);
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryTarget, DualAxisTest, ::testing::ValuesIn(AllCases()),
-                         CaseName);
+                         PartCaseName);
 
 }  // namespace
 }  // namespace manyworlds::testing

@@ -35,17 +35,10 @@ LaneKind KindOfWorld(std::size_t world) {
   }
 }
 
-struct RackAndPinionCase {
-  const PartKernels* kernels;
-  std::size_t world_count;
-  MotionType motion1;
-  MotionType motion2;
-};
-
-class RackAndPinionTest : public ::testing::TestWithParam<RackAndPinionCase> {
+class RackAndPinionTest : public ::testing::TestWithParam<PartCase> {
  protected:
   void SetUp() override {
-    const RackAndPinionCase& c = GetParam();
+    const PartCase& c = GetParam();
     kernels_ = c.kernels;
     bodies_.emplace(std::vector<MotionType>{c.motion1, c.motion2}, c.world_count);
     binding_ = BindPart(*bodies_, "rack", PartKind::kRackAndPinion, 0, 1);
@@ -126,32 +119,18 @@ class RackAndPinionTest : public ::testing::TestWithParam<RackAndPinionCase> {
 
   // Runs one verb on kernel and reference from the same body state and
   // impulse and compares every lane. K is a scalar, so no condition factor.
+  PartHooks Hooks() {
+    return {[this](std::size_t w) { return Eigen::VectorXd::Constant(1, Lambda(w)); },
+            [this](std::size_t w) {
+              return Eigen::VectorXd::Constant(1, reference_[w].GetTotalLambda());
+            },
+            [this](std::size_t w) { reference_[w].SetTotalLambda(Lambda(w)); },
+            [](std::size_t) { return 1.0; }};  // K is a scalar: no amplification
+  }
+
   template <class KernelVerb, class ReferenceVerb>
-  void CompareVerb(const char* label, KernelVerb kernel_verb,
-                   ReferenceVerb reference_verb) {
-    std::vector<RefBody> before1(worlds()), before2(worlds()), after1(worlds()),
-        after2(worlds());
-    std::vector<double> lambda_before(worlds());
-    std::vector<bool> reference_applied(bodies_->block_count(), false);
-    for (std::size_t w = 0; w < worlds(); ++w) {
-      lambda_before[w] = Lambda(w);
-      before1[w] = after1[w] = Body(w, 0);
-      before2[w] = after2[w] = Body(w, 1);
-      reference_[w].SetTotalLambda(Lambda(w));
-      if (reference_verb(w, after1[w], after2[w])) reference_applied[Block(w)] = true;
-    }
-    for (std::size_t block = 0; block < bodies_->block_count(); ++block) {
-      EXPECT_EQ(kernel_verb(block), reference_applied[block])
-          << label << ": 'any lane applied' of block " << block;
-    }
-    for (std::size_t w = 0; w < worlds(); ++w) {
-      ExpectBodyNear(*bodies_, w, 0, before1[w], after1[w], 1.0, label);
-      ExpectBodyNear(*bodies_, w, 1, before2[w], after2[w], 1.0, label);
-      const double expected = reference_[w].GetTotalLambda();
-      const double scale = std::max(std::abs(lambda_before[w]), std::abs(expected)) +
-                           std::abs(expected - lambda_before[w]);
-      EXPECT_NEAR(Lambda(w), expected, Tolerance(scale)) << label << ": lambda of world " << w;
-    }
+  void CompareVerb(const char* label, KernelVerb kernel_verb, ReferenceVerb reference_verb) {
+    CompareVerbOnEveryLane(label, *bodies_, Hooks(), kernel_verb, reference_verb);
   }
 
   void WarmStart(float ratio) {
@@ -319,32 +298,18 @@ TEST_P(RackAndPinionTest, GetSetSaveRestoreOfAccumulatedImpulse) {
   }
 }
 
-std::vector<RackAndPinionCase> AllCases() {
-  const std::pair<MotionType, MotionType> pairings[] = {
+std::vector<PartCase> AllCases() {
+  static const std::vector<std::pair<MotionType, MotionType>> pairings = {
       {MotionType::kDynamic, MotionType::kDynamic},
       {MotionType::kKinematic, MotionType::kDynamic},
       {MotionType::kDynamic, MotionType::kKinematic},
       {MotionType::kKinematic, MotionType::kKinematic},
   };
-  std::vector<RackAndPinionCase> cases;
-  for (const PartKernels* kernels : SupportedKernels()) {
-    for (const std::size_t worlds : TestWorldCounts()) {
-      for (const auto& [motion1, motion2] : pairings) {
-        cases.push_back({kernels, worlds, motion1, motion2});
-      }
-    }
-  }
-  return cases;
-}
-
-std::string CaseName(const ::testing::TestParamInfo<RackAndPinionCase>& info) {
-  const RackAndPinionCase& c = info.param;
-  return TargetLabel(c.kernels) + "_" + std::to_string(c.world_count) + "worlds_" +
-         MotionTypeName(c.motion1) + "_" + MotionTypeName(c.motion2);
+  return AllPartCases(pairings);
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryTarget, RackAndPinionTest, ::testing::ValuesIn(AllCases()),
-                         CaseName);
+                         PartCaseName);
 
 TEST(RackAndPinionBinding, StaticBodyIsRefusedNamingTheConstraint) {
   const BodyBlocks bodies({MotionType::kStatic, MotionType::kDynamic}, 4);

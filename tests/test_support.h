@@ -11,6 +11,8 @@
 #include <cctype>
 #include <cmath>
 #include <cstring>
+#include <functional>
+#include <utility>
 #include <cstddef>
 #include <random>
 #include <string>
@@ -217,6 +219,68 @@ inline void ExpectBodyNear(const BodyBlocks& blocks, std::size_t world,
                  Tolerance(1.0 + condition * rotation_change), where + ", rotation");
 }
 
+// How a part test reaches its accumulated impulses and effective-mass
+// condition, so one comparison routine serves every part.
+struct PartHooks {
+  std::function<Eigen::VectorXd(std::size_t world)> kernel_lambda;
+  std::function<Eigen::VectorXd(std::size_t world)> reference_lambda;
+  // Copies the kernel's impulse of a world into its reference part.
+  std::function<void(std::size_t world)> sync_reference_lambda;
+  // cond(K) of the world's effective mass (1 for scalar parts).
+  std::function<double(std::size_t world)> condition;
+};
+
+// Runs one verb on the kernel (per block) and on the reference (per world)
+// from the same body state and impulse, then compares every lane's bodies and
+// impulse, and the kernel's per-block "any lane applied" with the reference.
+// kernel_verb(block) -> bool; reference_verb(world, body1, body2) -> bool.
+template <class KernelVerb, class ReferenceVerb>
+void CompareVerbOnEveryLane(const char* label, const BodyBlocks& bodies,
+                            const PartHooks& hooks, KernelVerb kernel_verb,
+                            ReferenceVerb reference_verb) {
+  const std::size_t worlds = bodies.world_count();
+  std::vector<RefBody> before1(worlds), before2(worlds), after1(worlds), after2(worlds);
+  std::vector<Eigen::VectorXd> lambda_before(worlds);
+  std::vector<bool> reference_applied(bodies.block_count(), false);
+  for (std::size_t w = 0; w < worlds; ++w) {
+    lambda_before[w] = hooks.kernel_lambda(w);
+    before1[w] = after1[w] = ToReference(bodies.Get(w, 0), bodies.motion_type(0));
+    before2[w] = after2[w] = ToReference(bodies.Get(w, 1), bodies.motion_type(1));
+    hooks.sync_reference_lambda(w);
+    if (reference_verb(w, after1[w], after2[w])) {
+      reference_applied[w / kLaneWidth] = true;
+    }
+  }
+  for (std::size_t block = 0; block < bodies.block_count(); ++block) {
+    EXPECT_EQ(kernel_verb(block), reference_applied[block])
+        << label << ": 'any lane applied' of block " << block;
+  }
+  for (std::size_t w = 0; w < worlds; ++w) {
+    const double condition = hooks.condition(w);
+    ExpectBodyNear(bodies, w, 0, before1[w], after1[w], condition, label);
+    ExpectBodyNear(bodies, w, 1, before2[w], after2[w], condition, label);
+    // Same scale rule as the bodies: size before and after, plus the change
+    // amplified by cond(K).
+    const Eigen::VectorXd expected = hooks.reference_lambda(w);
+    const double scale = std::max(lambda_before[w].norm(), expected.norm()) +
+                         condition * (expected - lambda_before[w]).norm();
+    EXPECT_LE((hooks.kernel_lambda(w) - expected).cwiseAbs().maxCoeff(), Tolerance(scale))
+        << label << ": accumulated impulse of world " << w;
+  }
+}
+
+// One parameter set of a part test: target, world count, motion types.
+struct PartCase {
+  const PartKernels* kernels;
+  std::size_t world_count;
+  MotionType motion1;
+  MotionType motion2;
+};
+
+// Every supported target x TestWorldCounts() x the given motion pairings.
+inline std::vector<PartCase> AllPartCases(
+    const std::vector<std::pair<MotionType, MotionType>>& pairings);
+
 // Name of a kernel table for test names ("AVX2", "SCALAR", ...).
 inline std::string TargetLabel(const PartKernels* kernels) {
   std::string name = kernels->target_name;
@@ -231,6 +295,25 @@ inline std::string TargetLabel(const PartKernels* kernels) {
 inline const std::vector<std::size_t>& TestWorldCounts() {
   static const std::vector<std::size_t> counts = {1, 7, 16, 1000};
   return counts;
+}
+
+inline std::vector<PartCase> AllPartCases(
+    const std::vector<std::pair<MotionType, MotionType>>& pairings) {
+  std::vector<PartCase> cases;
+  for (const PartKernels* kernels : SupportedKernels()) {
+    for (const std::size_t worlds : TestWorldCounts()) {
+      for (const auto& [motion1, motion2] : pairings) {
+        cases.push_back({kernels, worlds, motion1, motion2});
+      }
+    }
+  }
+  return cases;
+}
+
+inline std::string PartCaseName(const ::testing::TestParamInfo<PartCase>& info) {
+  const PartCase& c = info.param;
+  return TargetLabel(c.kernels) + "_" + std::to_string(c.world_count) + "worlds_" +
+         MotionTypeName(c.motion1) + "_" + MotionTypeName(c.motion2);
 }
 
 }  // namespace manyworlds::testing
