@@ -35,19 +35,17 @@ LaneKind KindOfWorld(std::size_t world) {
   }
 }
 
-class RackAndPinionTest : public ::testing::TestWithParam<PartCase> {
+class RackAndPinionTest : public PartTestBase {
  protected:
   void SetUp() override {
-    const PartCase& c = GetParam();
-    kernels_ = c.kernels;
-    bodies_.emplace(std::vector<MotionType>{c.motion1, c.motion2}, c.world_count);
-    binding_ = BindPart(*bodies_, "rack", PartKind::kRackAndPinion, 0, 1);
+    SetUpBodies("rack", PartKind::kRackAndPinion);
+    const std::size_t world_count = GetParam().world_count;
     const std::size_t blocks = bodies_->block_count();
     geometry_ = std::make_unique<PartBlocks<RackAndPinionGeometry>>(blocks);
     parts_ = std::make_unique<PartBlocks<RackAndPinionLanes>>(blocks);
     error_ = std::make_unique<PartBlocks<LaneArray>>(blocks);
-    reference_.resize(c.world_count);
-    for (std::size_t world = 0; world < c.world_count; ++world) FillWorld(world);
+    reference_.resize(world_count);
+    for (std::size_t world = 0; world < world_count; ++world) FillWorld(world);
   }
 
   void FillWorld(std::size_t world) {
@@ -78,22 +76,15 @@ class RackAndPinionTest : public ::testing::TestWithParam<PartCase> {
     SetTotalLambda(*parts_, world, float(random.Uniform(-1, 1)));
   }
 
-  std::size_t worlds() const { return bodies_->world_count(); }
-  std::size_t Block(std::size_t world) const { return world / kLaneWidth; }
-  std::size_t Lane(std::size_t world) const { return world % kLaneWidth; }
-  BodyPair Pair(std::size_t block) { return PairInBlock(*bodies_, binding_, block); }
   const RackAndPinionGeometry& G(std::size_t w) const { return (*geometry_)[Block(w)]; }
   Vec3d HingeAxis(std::size_t w) const { return LaneVec3(G(w).hinge_axis, Lane(w)); }
   Vec3d SliderAxis(std::size_t w) const { return LaneVec3(G(w).slider_axis, Lane(w)); }
   double Ratio(std::size_t w) const { return G(w).ratio[Lane(w)]; }
   double Error(std::size_t w) const { return (*error_)[Block(w)][Lane(w)]; }
-  RefBody Body(std::size_t world, std::size_t body) const {
-    return ToReference(bodies_->Get(world, body), bodies_->motion_type(body));
-  }
   double Lambda(std::size_t world) const { return GetTotalLambda(*parts_, world); }
 
   void CalculateProperties() {
-    for (std::size_t block = 0; block < bodies_->block_count(); ++block) {
+    for (std::size_t block = 0; block < blocks(); ++block) {
       kernels_->rack_and_pinion_calculate_properties(Pair(block), (*geometry_)[block],
                                                      (*parts_)[block]);
     }
@@ -105,14 +96,14 @@ class RackAndPinionTest : public ::testing::TestWithParam<PartCase> {
   }
 
   void DeactivateFlaggedLanes() {
-    PartBlocks<LaneFlags> flags(bodies_->block_count());
+    PartBlocks<LaneFlags> flags(blocks());
     for (std::size_t w = 0; w < worlds(); ++w) {
       if (KindOfWorld(w) == LaneKind::kDeactivatedByFlag) {
         flags[Block(w)][Lane(w)] = 1.0f;
         reference_[w].Deactivate();
       }
     }
-    for (std::size_t block = 0; block < bodies_->block_count(); ++block) {
+    for (std::size_t block = 0; block < blocks(); ++block) {
       kernels_->rack_and_pinion_deactivate((*parts_)[block], flags[block]);
     }
   }
@@ -171,9 +162,6 @@ class RackAndPinionTest : public ::testing::TestWithParam<PartCase> {
         });
   }
 
-  const PartKernels* kernels_ = nullptr;
-  std::optional<BodyBlocks> bodies_;
-  PartBinding binding_;
   std::unique_ptr<PartBlocks<RackAndPinionGeometry>> geometry_;
   std::unique_ptr<PartBlocks<RackAndPinionLanes>> parts_;
   std::unique_ptr<PartBlocks<LaneArray>> error_;
@@ -214,16 +202,14 @@ TEST_P(RackAndPinionTest, WarmStartScalesAndAppliesImpulse) {
 TEST_P(RackAndPinionTest, WarmStartWithRatioZeroAppliesNothing) {
   CalculateProperties();
   const BodyBlocks before = *bodies_;
-  for (std::size_t block = 0; block < bodies_->block_count(); ++block) {
+  for (std::size_t block = 0; block < blocks(); ++block) {
     kernels_->rack_and_pinion_warm_start(Pair(block), (*parts_)[block], 0.0f);
   }
   for (std::size_t w = 0; w < worlds(); ++w) {
     EXPECT_EQ(Lambda(w), 0.0) << "world " << w;
-    for (std::size_t body = 0; body < 2; ++body) {
-      const BodyState a = before.Get(w, body), b = bodies_->Get(w, body);
-      EXPECT_TRUE(BitEqual(&a, &b, sizeof(BodyState))) << "body " << body << " of world " << w;
-    }
   }
+  ExpectBodiesUnchanged(before, [](std::size_t, std::size_t) { return true; },
+                        "warm start with ratio 0");
 }
 
 TEST_P(RackAndPinionTest, VelocitySolveMatchesReferenceAndZeroesVelocityError) {
@@ -249,35 +235,32 @@ TEST_P(RackAndPinionTest, PositionSolveMatchesReferenceAndMovesOnlyDynamicBodies
   DeactivateFlaggedLanes();
   const BodyBlocks before = *bodies_;
   SolvePosition(0.2f);
-  for (std::size_t body = 0; body < 2; ++body) {
-    if (bodies_->motion_type(body) == MotionType::kDynamic) continue;
-    for (std::size_t w = 0; w < worlds(); ++w) {
-      const BodyState a = before.Get(w, body), b = bodies_->Get(w, body);
-      EXPECT_TRUE(BitEqual(&a, &b, sizeof(BodyState)))
-          << "position solve moved kinematic body " << body << " of world " << w;
-    }
-  }
+  ExpectBodiesUnchanged(
+      before,
+      [&](std::size_t, std::size_t body) {
+        return bodies_->motion_type(body) != MotionType::kDynamic;
+      },
+      "position solve of a kinematic body");
 }
 
 TEST_P(RackAndPinionTest, DeactivatedAndSingularLanesStayFiniteAndApplyNothing) {
   CalculateProperties();
   DeactivateFlaggedLanes();
   const BodyBlocks before = *bodies_;
-  for (std::size_t block = 0; block < bodies_->block_count(); ++block) {
+  for (std::size_t block = 0; block < blocks(); ++block) {
     kernels_->rack_and_pinion_warm_start(Pair(block), (*parts_)[block], 1.0f);
     kernels_->rack_and_pinion_solve_velocity(Pair(block), (*geometry_)[block], (*parts_)[block]);
     kernels_->rack_and_pinion_solve_position(Pair(block), (*error_)[block], (*parts_)[block],
                                              0.2f);
   }
   for (std::size_t w = 0; w < worlds(); ++w) {
-    if (reference_[w].IsActive()) continue;
-    EXPECT_EQ(Lambda(w), 0.0) << "inactive world " << w;
-    for (std::size_t body = 0; body < 2; ++body) {
-      const BodyState a = before.Get(w, body), b = bodies_->Get(w, body);
-      EXPECT_TRUE(BitEqual(&a, &b, sizeof(BodyState)))
-          << "inactive world " << w << " moved body " << body;
+    if (!reference_[w].IsActive()) {
+      EXPECT_EQ(Lambda(w), 0.0) << "inactive world " << w;
     }
   }
+  ExpectBodiesUnchanged(
+      before, [&](std::size_t w, std::size_t) { return !reference_[w].IsActive(); },
+      "inactive lane");
 }
 
 TEST_P(RackAndPinionTest, GetSetSaveRestoreOfAccumulatedImpulse) {

@@ -12,12 +12,14 @@
 #include <cmath>
 #include <cstring>
 #include <functional>
+#include <optional>
 #include <utility>
 #include <cstddef>
 #include <random>
 #include <string>
 #include <vector>
 
+#include "batch/part_binding.h"
 #include "batch/world_blocks.h"
 #include "kernels/part_kernels.h"
 #include "manyworlds/body_state.h"
@@ -275,6 +277,45 @@ struct PartCase {
   std::size_t world_count;
   MotionType motion1;
   MotionType motion2;
+};
+
+// What every part test fixture holds: the case, the bodies of its worlds and
+// the part's binding to bodies 0 and 1.
+class PartTestBase : public ::testing::TestWithParam<PartCase> {
+ protected:
+  void SetUpBodies(const char* constraint_name, PartKind kind) {
+    const PartCase& c = GetParam();
+    kernels_ = c.kernels;
+    bodies_.emplace(std::vector<MotionType>{c.motion1, c.motion2}, c.world_count);
+    binding_ = BindPart(*bodies_, constraint_name, kind, 0, 1);
+  }
+
+  std::size_t worlds() const { return bodies_->world_count(); }
+  std::size_t blocks() const { return bodies_->block_count(); }
+  static std::size_t Block(std::size_t world) { return world / kLaneWidth; }
+  static std::size_t Lane(std::size_t world) { return world % kLaneWidth; }
+  BodyPair Pair(std::size_t block) { return PairInBlock(*bodies_, binding_, block); }
+  RefBody Body(std::size_t world, std::size_t body) const {
+    return ToReference(bodies_->Get(world, body), bodies_->motion_type(body));
+  }
+
+  // Expects both bodies of every selected world to be bit-identical to `before`.
+  template <class Selected>
+  void ExpectBodiesUnchanged(const BodyBlocks& before, Selected selected,
+                             const char* what) const {
+    for (std::size_t w = 0; w < worlds(); ++w) {
+      for (std::size_t body = 0; body < 2; ++body) {
+        if (!selected(w, body)) continue;
+        const BodyState a = before.Get(w, body), b = bodies_->Get(w, body);
+        EXPECT_TRUE(BitEqual(&a, &b, sizeof(BodyState)))
+            << what << ": body " << body << " of world " << w << " changed";
+      }
+    }
+  }
+
+  const PartKernels* kernels_ = nullptr;
+  std::optional<BodyBlocks> bodies_;
+  PartBinding binding_;
 };
 
 // Every supported target x TestWorldCounts() x the given motion pairings.
