@@ -34,7 +34,9 @@
 #include "batch/part_binding.h"
 #include "batch/world_blocks.h"
 #include "hwy/targets.h"
-#include "kernels/part_kernels.h"
+#include "kernels/dual_axis.h"
+#include "kernels/lane_math.h"
+#include "kernels/rack_and_pinion.h"
 #include "manyworlds/lanes.h"
 #include "manyworlds/targets.h"
 
@@ -131,6 +133,19 @@ void SetLane(Vec3Lanes& v, std::size_t lane, const Float3& value) {
 
 // ------------------------------------------------------------------- batch
 
+// Every part's kernels on one target.
+struct PartKernels {
+  TargetInfo target;
+  const DualAxisKernels* dual_axis;
+  const RackAndPinionKernels* rack_and_pinion;
+};
+
+// nullptr members if the target is not supported here.
+PartKernels KernelsOf(const TargetInfo& target) {
+  return {target, KernelsForTarget<DualAxisKernels>(target.bits),
+          KernelsForTarget<RackAndPinionKernels>(target.bits)};
+}
+
 enum class Verb {
   kCalculateProperties,
   kWarmStart,
@@ -217,9 +232,9 @@ class Batch {
   // before warm start and the solves.
   void CalculateProperties(const PartKernels& kernels) {
     for (std::size_t block = 0; block < blocks; ++block) {
-      kernels.dual_axis_calculate_properties(
+      kernels.dual_axis->calculate_properties(
           dual_axis_pairs[block], dual_axis_geometry[block], dual_axis[block]);
-      kernels.rack_and_pinion_calculate_properties(
+      kernels.rack_and_pinion->calculate_properties(
           rack_and_pinion_pairs[block], rack_and_pinion_geometry[block],
           rack_and_pinion[block]);
     }
@@ -299,36 +314,36 @@ bool RunOnEveryBlock(const PartKernels& k, Batch& batch, std::size_t iteration) 
       const DualAxisGeometry& geometry = batch.dual_axis_geometry[block];
       DualAxisLanes& part = batch.dual_axis[block];
       if constexpr (kVerb == Verb::kCalculateProperties) {
-        k.dual_axis_calculate_properties(pair, geometry, part);
+        k.dual_axis->calculate_properties(pair, geometry, part);
       } else if constexpr (kVerb == Verb::kWarmStart) {
-        k.dual_axis_warm_start(pair, geometry, part, kWarmStartRatio);
+        k.dual_axis->warm_start(pair, geometry, part, kWarmStartRatio);
       } else if constexpr (kVerb == Verb::kSolveVelocity) {
-        applied |= k.dual_axis_solve_velocity(pair, geometry, part);
+        applied |= k.dual_axis->solve_velocity(pair, geometry, part);
       } else if constexpr (kVerb == Verb::kSolvePosition) {
-        applied |= k.dual_axis_solve_position(
+        applied |= k.dual_axis->solve_position(
             pair, geometry, batch.separation[sign][block], part, kBaumgarte);
       } else if constexpr (kVerb == Verb::kDeactivate) {
-        k.dual_axis_deactivate(part, batch.deactivate_lanes[block]);
+        k.dual_axis->deactivate(part, batch.deactivate_lanes[block]);
       } else {
-        k.dual_axis_is_active(part, batch.active[block]);
+        k.dual_axis->is_active(part, batch.active[block]);
       }
     } else {
       const BodyPair& pair = batch.rack_and_pinion_pairs[block];
       const RackAndPinionGeometry& geometry = batch.rack_and_pinion_geometry[block];
       RackAndPinionLanes& part = batch.rack_and_pinion[block];
       if constexpr (kVerb == Verb::kCalculateProperties) {
-        k.rack_and_pinion_calculate_properties(pair, geometry, part);
+        k.rack_and_pinion->calculate_properties(pair, geometry, part);
       } else if constexpr (kVerb == Verb::kWarmStart) {
-        k.rack_and_pinion_warm_start(pair, part, kWarmStartRatio);
+        k.rack_and_pinion->warm_start(pair, part, kWarmStartRatio);
       } else if constexpr (kVerb == Verb::kSolveVelocity) {
-        applied |= k.rack_and_pinion_solve_velocity(pair, geometry, part);
+        applied |= k.rack_and_pinion->solve_velocity(pair, geometry, part);
       } else if constexpr (kVerb == Verb::kSolvePosition) {
-        applied |= k.rack_and_pinion_solve_position(
+        applied |= k.rack_and_pinion->solve_position(
             pair, batch.rack_and_pinion_error[sign][block], part, kBaumgarte);
       } else if constexpr (kVerb == Verb::kDeactivate) {
-        k.rack_and_pinion_deactivate(part, batch.deactivate_lanes[block]);
+        k.rack_and_pinion->deactivate(part, batch.deactivate_lanes[block]);
       } else {
-        k.rack_and_pinion_is_active(part, batch.active[block]);
+        k.rack_and_pinion->is_active(part, batch.active[block]);
       }
     }
   }
@@ -364,7 +379,7 @@ std::vector<BenchCase> AllCases() {
 // "dual_axis/solve_velocity/AVX2"
 std::string BenchmarkName(const BenchCase& c, const PartKernels& kernels) {
   return std::string(PartKindName(c.part)) + "/" + VerbName(c.verb) + "/" +
-         kernels.target_name;
+         kernels.target.name;
 }
 
 void RunBenchmark(benchmark::State& state, const BenchCase& c,
@@ -441,7 +456,7 @@ void PrintTable(const RecordingReporter& reporter, const std::vector<BenchCase>&
                 std::size_t worlds) {
   const std::size_t lanes = DispatchedVectorLanes();
   const std::string simd = DispatchedTargetName();
-  const std::string base = scalar ? scalar->target_name : "SCALAR";
+  const std::string base = scalar ? scalar->target.name : "SCALAR";
   std::printf(
       "\nSIMD speed-up: %zu worlds (%zu blocks of %zu), threads = 1, float; "
       "dispatched target %s with %zu float lanes per vector vs Highway's %s "
@@ -524,10 +539,15 @@ int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
 
-  const PartKernels& dispatched = DispatchedKernels();
-  const PartKernels* scalar = KernelsForTarget(HWY_SCALAR);
-  if (scalar == &dispatched || (scalar && scalar->target == dispatched.target)) {
-    scalar = nullptr;  // nothing to compare with; registered once below
+  // Static: the registered benchmarks keep pointers to them.
+  static const PartKernels dispatched =
+      KernelsOf(DispatchedKernels<LaneMathKernels>().target);
+  static PartKernels scalar_kernels;
+  const PartKernels* scalar = nullptr;  // null: nothing to compare with
+  const LaneMathKernels* scalar_math = KernelsForTarget<LaneMathKernels>(HWY_SCALAR);
+  if (scalar_math && scalar_math->target.bits != dispatched.target.bits) {
+    scalar_kernels = KernelsOf(scalar_math->target);
+    scalar = &scalar_kernels;
   }
   const std::vector<BenchCase> cases = AllCases();
   for (const BenchCase& c : cases) {

@@ -89,7 +89,7 @@ HWY_INLINE void ApplyImpulse(const BodyPair& bodies, const DualAxisGeometry& geo
 
 }  // namespace dual_axis
 
-HWY_INLINE void DualAxisCalculateProperties(const BodyPair& bodies,
+inline void DualAxisCalculateProperties(const BodyPair& bodies,
                                             const DualAxisGeometry& geometry,
                                             DualAxisLanes& part) {
   ForEachChunk([&](std::size_t offset) {
@@ -134,7 +134,7 @@ HWY_INLINE void DualAxisCalculateProperties(const BodyPair& bodies,
   });
 }
 
-HWY_INLINE void DualAxisWarmStart(const BodyPair& bodies,
+inline void DualAxisWarmStart(const BodyPair& bodies,
                                   const DualAxisGeometry& geometry,
                                   DualAxisLanes& part, float warm_start_ratio) {
   const LaneVec ratio = Splat(warm_start_ratio);
@@ -149,7 +149,7 @@ HWY_INLINE void DualAxisWarmStart(const BodyPair& bodies,
 }
 
 // Returns true if any lane applied a non-zero impulse.
-HWY_INLINE bool DualAxisSolveVelocity(const BodyPair& bodies,
+inline bool DualAxisSolveVelocity(const BodyPair& bodies,
                                       const DualAxisGeometry& geometry,
                                       DualAxisLanes& part) {
   bool applied = false;
@@ -183,7 +183,7 @@ HWY_INLINE bool DualAxisSolveVelocity(const BodyPair& bodies,
 // Baumgarte step towards C = 0 using the properties of the last
 // CalculateProperties (callers recompute them first). `u` = p2 - p1 now.
 // Returns true if any lane had a non-zero error.
-HWY_INLINE bool DualAxisSolvePosition(const BodyPair& bodies,
+inline bool DualAxisSolvePosition(const BodyPair& bodies,
                                       const DualAxisGeometry& geometry,
                                       const Vec3Lanes& separation,
                                       const DualAxisLanes& part,
@@ -208,28 +208,25 @@ HWY_INLINE bool DualAxisSolvePosition(const BodyPair& bodies,
 }
 
 // Deactivate lanes whose flag is set: zero K^-1 and the accumulated impulse.
-HWY_INLINE void DualAxisDeactivate(DualAxisLanes& part, const LaneFlags& lanes) {
+inline void DualAxisDeactivate(DualAxisLanes& part, const LaneFlags& lanes) {
   ForEachChunk([&](std::size_t offset) {
-    const LaneMask off = hn::Ne(Load(lanes, offset), Zero());
-    auto clear = [&](LaneArray& field) {
-      Store(hn::IfThenZeroElse(off, Load(field, offset)), field, offset);
-    };
-    clear(part.effective_mass.xx);
-    clear(part.effective_mass.xy);
-    clear(part.effective_mass.yy);
-    clear(part.persistent.total_lambda.x);
-    clear(part.persistent.total_lambda.y);
+    const LaneMask off = LoadFlags(lanes, offset);
+    ClearWhere(off, part.effective_mass.xx, offset);
+    ClearWhere(off, part.effective_mass.xy, offset);
+    ClearWhere(off, part.effective_mass.yy, offset);
+    ClearWhere(off, part.persistent.total_lambda.x, offset);
+    ClearWhere(off, part.persistent.total_lambda.y, offset);
   });
 }
 
 // flag = 1 where K^-1 != 0 (Jolt's IsActive), else 0.
-HWY_INLINE void DualAxisIsActive(const DualAxisLanes& part, LaneFlags& active) {
+inline void DualAxisIsActive(const DualAxisLanes& part, LaneFlags& active) {
   ForEachChunk([&](std::size_t offset) {
     const LaneMask nonzero =
         hn::Or(hn::Or(hn::Ne(Load(part.effective_mass.xx, offset), Zero()),
                       hn::Ne(Load(part.effective_mass.xy, offset), Zero())),
                hn::Ne(Load(part.effective_mass.yy, offset), Zero()));
-    Store(hn::IfThenElseZero(nonzero, Splat(1.0f)), active, offset);
+    StoreFlags(nonzero, active, offset);
   });
 }
 

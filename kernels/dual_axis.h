@@ -2,6 +2,8 @@
 // The maths is in dual_axis-inl.h.
 #pragma once
 
+#include "kernels/body_lanes.h"
+#include "kernels/kernel_table.h"
 #include "manyworlds/lanes.h"
 
 namespace manyworlds {
@@ -27,5 +29,22 @@ struct DualAxisLanes {
     Vec2Lanes total_lambda;  // accumulated impulse per row
   } persistent;
 };
+
+// The part's kernels on one target; each call processes one block.
+struct DualAxisKernels {
+  TargetInfo target;
+  void (*calculate_properties)(const BodyPair&, const DualAxisGeometry&, DualAxisLanes&);
+  void (*warm_start)(const BodyPair&, const DualAxisGeometry&, DualAxisLanes&,
+                     float warm_start_ratio);
+  // Solves return true if any lane applied a non-zero impulse / correction.
+  bool (*solve_velocity)(const BodyPair&, const DualAxisGeometry&, DualAxisLanes&);
+  bool (*solve_position)(const BodyPair&, const DualAxisGeometry&,
+                         const Vec3Lanes& separation, const DualAxisLanes&,
+                         float baumgarte);
+  void (*deactivate)(DualAxisLanes&, const LaneFlags& lanes);
+  void (*is_active)(const DualAxisLanes&, LaneFlags& active);
+};
+
+MANYWORLDS_DECLARE_KERNEL_TABLE(DualAxisKernels)
 
 }  // namespace manyworlds

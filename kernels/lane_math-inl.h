@@ -385,6 +385,18 @@ HWY_INLINE Sym33 InverseSym33(const Sym33& k, LaneMask& invertible) {
           inverse.m[1][1], inverse.m[1][2], inverse.m[2][2]};
 }
 
+// Per-lane flags (0 = off) as masks and back.
+HWY_INLINE LaneMask LoadFlags(const LaneFlags& flags, std::size_t offset) {
+  return hn::Ne(Load(flags, offset), Zero());
+}
+HWY_INLINE void StoreFlags(LaneMask mask, LaneFlags& flags, std::size_t offset) {
+  Store(hn::IfThenElseZero(mask, Splat(1.0f)), flags, offset);
+}
+// field = 0 in the lanes of `mask` (Deactivate's write).
+HWY_INLINE void ClearWhere(LaneMask mask, LaneArray& field, std::size_t offset) {
+  Store(hn::IfThenZeroElse(mask, Load(field, offset)), field, offset);
+}
+
 // True if any lane of the mask is set (for "did any world apply an impulse").
 HWY_INLINE bool AnyLane(LaneMask mask) { return !hn::AllFalse(LaneTag(), mask); }
 

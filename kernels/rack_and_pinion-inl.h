@@ -54,7 +54,7 @@ HWY_INLINE void ApplyVelocityStep(const BodyPair& bodies,
 
 }  // namespace rack_and_pinion
 
-HWY_INLINE void RackAndPinionCalculateProperties(
+inline void RackAndPinionCalculateProperties(
     const BodyPair& bodies, const RackAndPinionGeometry& geometry,
     RackAndPinionLanes& part) {
   ForEachChunk([&](std::size_t offset) {
@@ -78,7 +78,7 @@ HWY_INLINE void RackAndPinionCalculateProperties(
   });
 }
 
-HWY_INLINE void RackAndPinionWarmStart(const BodyPair& bodies,
+inline void RackAndPinionWarmStart(const BodyPair& bodies,
                                        RackAndPinionLanes& part,
                                        float warm_start_ratio) {
   const LaneVec ratio = Splat(warm_start_ratio);
@@ -91,7 +91,7 @@ HWY_INLINE void RackAndPinionWarmStart(const BodyPair& bodies,
 }
 
 // Returns true if any lane applied a non-zero impulse.
-HWY_INLINE bool RackAndPinionSolveVelocity(const BodyPair& bodies,
+inline bool RackAndPinionSolveVelocity(const BodyPair& bodies,
                                            const RackAndPinionGeometry& geometry,
                                            RackAndPinionLanes& part) {
   bool applied = false;
@@ -114,7 +114,7 @@ HWY_INLINE bool RackAndPinionSolveVelocity(const BodyPair& bodies,
 
 // Baumgarte step for the caller's position error C (theta1 - r d2, wrapped by
 // the caller). Returns true if any lane had a non-zero error.
-HWY_INLINE bool RackAndPinionSolvePosition(const BodyPair& bodies,
+inline bool RackAndPinionSolvePosition(const BodyPair& bodies,
                                            const LaneArray& error,
                                            const RackAndPinionLanes& part,
                                            float baumgarte) {
@@ -141,22 +141,19 @@ HWY_INLINE bool RackAndPinionSolvePosition(const BodyPair& bodies,
   return applied;
 }
 
-HWY_INLINE void RackAndPinionDeactivate(RackAndPinionLanes& part,
-                                        const LaneFlags& lanes) {
+inline void RackAndPinionDeactivate(RackAndPinionLanes& part,
+                                    const LaneFlags& lanes) {
   ForEachChunk([&](std::size_t offset) {
-    const LaneMask off = hn::Ne(Load(lanes, offset), Zero());
-    Store(hn::IfThenZeroElse(off, Load(part.effective_mass, offset)),
-          part.effective_mass, offset);
-    Store(hn::IfThenZeroElse(off, Load(part.persistent.total_lambda, offset)),
-          part.persistent.total_lambda, offset);
+    const LaneMask off = LoadFlags(lanes, offset);
+    ClearWhere(off, part.effective_mass, offset);
+    ClearWhere(off, part.persistent.total_lambda, offset);
   });
 }
 
-HWY_INLINE void RackAndPinionIsActive(const RackAndPinionLanes& part,
-                                      LaneFlags& active) {
+inline void RackAndPinionIsActive(const RackAndPinionLanes& part,
+                                  LaneFlags& active) {
   ForEachChunk([&](std::size_t offset) {
-    const LaneMask nonzero = hn::Ne(Load(part.effective_mass, offset), Zero());
-    Store(hn::IfThenElseZero(nonzero, Splat(1.0f)), active, offset);
+    StoreFlags(hn::Ne(Load(part.effective_mass, offset), Zero()), active, offset);
   });
 }
 

@@ -2,6 +2,8 @@
 // for one block of worlds. The maths is in rack_and_pinion-inl.h.
 #pragma once
 
+#include "kernels/body_lanes.h"
+#include "kernels/kernel_table.h"
 #include "manyworlds/lanes.h"
 
 namespace manyworlds {
@@ -22,5 +24,22 @@ struct RackAndPinionLanes {
     LaneArray total_lambda;
   } persistent;
 };
+
+// The part's kernels on one target; each call processes one block.
+struct RackAndPinionKernels {
+  TargetInfo target;
+  void (*calculate_properties)(const BodyPair&, const RackAndPinionGeometry&,
+                               RackAndPinionLanes&);
+  void (*warm_start)(const BodyPair&, RackAndPinionLanes&, float warm_start_ratio);
+  bool (*solve_velocity)(const BodyPair&, const RackAndPinionGeometry&,
+                         RackAndPinionLanes&);
+  // `error` = theta1 - r d2 per lane, wrapped by the caller.
+  bool (*solve_position)(const BodyPair&, const LaneArray& error,
+                         const RackAndPinionLanes&, float baumgarte);
+  void (*deactivate)(RackAndPinionLanes&, const LaneFlags& lanes);
+  void (*is_active)(const RackAndPinionLanes&, LaneFlags& active);
+};
+
+MANYWORLDS_DECLARE_KERNEL_TABLE(RackAndPinionKernels)
 
 }  // namespace manyworlds

@@ -10,7 +10,6 @@
 #include "batch/part_binding.h"
 #include "batch/part_state.h"
 #include "batch/world_blocks.h"
-#include "kernels/part_kernels.h"
 #include "reference/dual_axis_part.h"
 #include "tests/test_support.h"
 
@@ -34,7 +33,7 @@ LaneKind KindOfWorld(std::size_t world) {
   }
 }
 
-class DualAxisTest : public PartTestBase {
+class DualAxisTest : public PartTestBase<DualAxisKernels> {
  protected:
   void SetUp() override {
     SetUpBodies("slider_sideways", PartKind::kDualAxis);
@@ -100,7 +99,7 @@ class DualAxisTest : public PartTestBase {
 
   void CalculateProperties() {
     for (std::size_t block = 0; block < blocks(); ++block) {
-      kernels_->dual_axis_calculate_properties(Pair(block), (*geometry_)[block],
+      kernels_->calculate_properties(Pair(block), (*geometry_)[block],
                                                (*parts_)[block]);
     }
     for (std::size_t w = 0; w < worlds(); ++w) {
@@ -119,7 +118,7 @@ class DualAxisTest : public PartTestBase {
       }
     }
     for (std::size_t block = 0; block < blocks(); ++block) {
-      kernels_->dual_axis_deactivate((*parts_)[block], flags[block]);
+      kernels_->deactivate((*parts_)[block], flags[block]);
     }
   }
 
@@ -142,7 +141,7 @@ class DualAxisTest : public PartTestBase {
     CompareVerb(
         "warm start",
         [&](std::size_t block) {
-          kernels_->dual_axis_warm_start(Pair(block), (*geometry_)[block],
+          kernels_->warm_start(Pair(block), (*geometry_)[block],
                                          (*parts_)[block], ratio);
           return false;
         },
@@ -156,7 +155,7 @@ class DualAxisTest : public PartTestBase {
     CompareVerb(
         "velocity solve",
         [&](std::size_t block) {
-          return kernels_->dual_axis_solve_velocity(Pair(block), (*geometry_)[block],
+          return kernels_->solve_velocity(Pair(block), (*geometry_)[block],
                                                     (*parts_)[block]);
         },
         [&](std::size_t w, RefBody& b1, RefBody& b2) {
@@ -168,7 +167,7 @@ class DualAxisTest : public PartTestBase {
     CompareVerb(
         "position solve",
         [&](std::size_t block) {
-          return kernels_->dual_axis_solve_position(Pair(block), (*geometry_)[block],
+          return kernels_->solve_position(Pair(block), (*geometry_)[block],
                                                     (*separation_)[block],
                                                     (*parts_)[block], baumgarte);
         },
@@ -220,7 +219,7 @@ TEST_P(DualAxisTest, CalculatePropertiesMatchesReference) {
     const bool singular = KindOfWorld(w) == LaneKind::kSingular ||
                           (bodies_->motion_type(0) != MotionType::kDynamic &&
                            bodies_->motion_type(1) != MotionType::kDynamic);
-    if (lane == 0) kernels_->dual_axis_is_active(part, active);
+    if (lane == 0) kernels_->is_active(part, active);
     EXPECT_EQ(active[lane] != 0.0f, ref.IsActive()) << "IsActive of world " << w;
     EXPECT_EQ(active[lane] == 0.0f, singular) << "IsActive of world " << w;
     if (singular) {
@@ -238,7 +237,7 @@ TEST_P(DualAxisTest, WarmStartWithRatioZeroAppliesNothing) {
   CalculateProperties();
   const BodyBlocks before = *bodies_;
   for (std::size_t block = 0; block < blocks(); ++block) {
-    kernels_->dual_axis_warm_start(Pair(block), (*geometry_)[block], (*parts_)[block], 0.0f);
+    kernels_->warm_start(Pair(block), (*geometry_)[block], (*parts_)[block], 0.0f);
   }
   for (std::size_t w = 0; w < worlds(); ++w) {
     EXPECT_EQ(Lambda(w), Vec2d::Zero()) << "world " << w;
@@ -277,9 +276,9 @@ TEST_P(DualAxisTest, DeactivatedAndSingularLanesStayFiniteAndApplyNothing) {
   DeactivateFlaggedLanes();
   const BodyBlocks before = *bodies_;
   for (std::size_t block = 0; block < blocks(); ++block) {
-    kernels_->dual_axis_warm_start(Pair(block), (*geometry_)[block], (*parts_)[block], 1.0f);
-    kernels_->dual_axis_solve_velocity(Pair(block), (*geometry_)[block], (*parts_)[block]);
-    kernels_->dual_axis_solve_position(Pair(block), (*geometry_)[block],
+    kernels_->warm_start(Pair(block), (*geometry_)[block], (*parts_)[block], 1.0f);
+    kernels_->solve_velocity(Pair(block), (*geometry_)[block], (*parts_)[block]);
+    kernels_->solve_position(Pair(block), (*geometry_)[block],
                                        (*separation_)[block], (*parts_)[block], 0.2f);
   }
   for (std::size_t w = 0; w < worlds(); ++w) {
@@ -314,7 +313,7 @@ TEST_P(DualAxisTest, GetSetSaveRestoreOfAccumulatedImpulse) {
   }
 }
 
-std::vector<PartCase> AllCases() {
+std::vector<PartCase<DualAxisKernels>> AllCases() {
   static const std::vector<std::pair<MotionType, MotionType>> pairings = {
       {MotionType::kDynamic, MotionType::kDynamic},
       {MotionType::kDynamic, MotionType::kStatic},
@@ -323,11 +322,11 @@ std::vector<PartCase> AllCases() {
       {MotionType::kDynamic, MotionType::kKinematic},
       {MotionType::kKinematic, MotionType::kStatic},
   };
-  return AllPartCases(pairings);
+  return AllPartCases<DualAxisKernels>(pairings);
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryTarget, DualAxisTest, ::testing::ValuesIn(AllCases()),
-                         PartCaseName);
+                         PartCaseName<DualAxisKernels>);
 
 }  // namespace
 }  // namespace manyworlds::testing

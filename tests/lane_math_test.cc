@@ -1,4 +1,4 @@
-// Lane maths (kernels/lane_math-inl.h, exported as the math_* entries of every
+// Lane maths (kernels/lane_math-inl.h, exported as LaneMathKernels of every
 // kernel table), lane by lane against libm, Eigen in double and
 // reference/math.h, on every Highway target this CPU supports. Inputs differ
 // in every lane; every lane of several blocks is checked.
@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "kernels/body_lanes.h"
-#include "kernels/part_kernels.h"
+#include "kernels/lane_math.h"
 #include "manyworlds/lanes.h"
 #include "reference/math.h"
 #include "tests/test_support.h"
@@ -27,9 +27,9 @@ namespace {
 constexpr int kBlocks = 64;  // blocks of random lanes per test
 constexpr double kPi = std::numbers::pi;
 
-class LaneMathTest : public ::testing::TestWithParam<const PartKernels*> {
+class LaneMathTest : public ::testing::TestWithParam<const LaneMathKernels*> {
  protected:
-  const PartKernels& Kernels() const { return *GetParam(); }
+  const LaneMathKernels& Kernels() const { return *GetParam(); }
 };
 
 std::string LaneLabel(const std::string& what, std::size_t block, std::size_t lane) {
@@ -107,7 +107,7 @@ TEST_P(LaneMathTest, SinCosMatchesLibmWithinTwoUlpOfOne) {
     for (std::size_t lane = 0; lane < kLaneWidth; ++lane) {
       x[lane] = inputs[block * kLaneWidth + lane];
     }
-    Kernels().math_sin_cos(x, sin, cos);
+    Kernels().sin_cos(x, sin, cos);
     for (std::size_t lane = 0; lane < kLaneWidth; ++lane) {
       const double xd = x[lane];
       const double expected_sin = std::sin(xd), expected_cos = std::cos(xd);
@@ -159,7 +159,7 @@ TEST_P(LaneMathTest, CrossAndDotMatchEigen) {
       SetLaneVec3(a, lane, va);
       SetLaneVec3(b, lane, vb);
     }
-    Kernels().math_cross_dot(a, b, cross, dot);
+    Kernels().cross_dot(a, b, cross, dot);
     for (std::size_t lane = 0; lane < kLaneWidth; ++lane) {
       const Vec3d va = LaneVec3(a, lane), vb = LaneVec3(b, lane);
       // Scale |a||b|: bounds every product summed in a cross or dot component.
@@ -186,7 +186,7 @@ TEST_P(LaneMathTest, QuatMultiplyMatchesEigenHamiltonProduct) {
       SetLaneQuat(a, lane, lane % 2 ? any_quat() : FloatUnitQuat(random));
       SetLaneQuat(b, lane, any_quat());
     }
-    Kernels().math_quat_multiply(a, b, product);
+    Kernels().quat_multiply(a, b, product);
     for (std::size_t lane = 0; lane < kLaneWidth; ++lane) {
       const Quatd qa = LaneQuat(a, lane), qb = LaneQuat(b, lane);
       // Scale |a||b|: every term of a product component is bounded by it.
@@ -205,7 +205,7 @@ TEST_P(LaneMathTest, QuatRotateAndInverseRotateMatchEigen) {
       SetLaneQuat(q, lane, FloatUnitQuat(random));
       SetLaneVec3(v, lane, random.UnitVector() * random.LogUniform(1e-3, 1e3));
     }
-    Kernels().math_quat_rotate(q, v, rotated, inverse_rotated);
+    Kernels().quat_rotate(q, v, rotated, inverse_rotated);
     for (std::size_t lane = 0; lane < kLaneWidth; ++lane) {
       const Quatd qd = LaneQuat(q, lane);
       const Vec3d vd = LaneVec3(v, lane);
@@ -228,7 +228,7 @@ TEST_P(LaneMathTest, QuatNormalizeMatchesEigen) {
       const double length = random.LogUniform(1e-3, 1e3);
       SetLaneQuat(q, lane, Quatd(direction.coeffs() * (length / direction.norm())));
     }
-    Kernels().math_quat_normalize(q, normalized);
+    Kernels().quat_normalize(q, normalized);
     for (std::size_t lane = 0; lane < kLaneWidth; ++lane) {
       // Scale 1: the result is a unit quaternion.
       ExpectQuatNear(LaneQuat(normalized, lane), LaneQuat(q, lane).normalized(),
@@ -251,7 +251,7 @@ TEST_P(LaneMathTest, QuatFromAxisAngleMatchesReference) {
                           : lane % 4 == 3 ? random.Uniform(-2000, 2000)
                                           : random.Uniform(-2 * kPi, 2 * kPi));
     }
-    Kernels().math_quat_from_axis_angle(axis, angle, q);
+    Kernels().quat_from_axis_angle(axis, angle, q);
     for (std::size_t lane = 0; lane < kLaneWidth; ++lane) {
       const Quatd expected =
           reference::QuatFromAxisAngle<double>(LaneVec3(axis, lane), angle[lane]);
@@ -287,7 +287,7 @@ TEST_P(LaneMathTest, AddRotationStepMatchesReferenceAndKeepsTinyStepsExact) {
       SetLaneVec3(theta, lane, random.UnitVector() * length);
     }
     before = q;
-    Kernels().math_add_rotation_step(q, theta);
+    Kernels().add_rotation_step(q, theta);
     for (std::size_t lane = 0; lane < kLaneWidth; ++lane) {
       const Vec3d t = LaneVec3(theta, lane);
       const std::string label =
@@ -336,7 +336,7 @@ TEST_P(LaneMathTest, WorldInverseInertiaMatchesReference) {
     BodyLanes body;
     FillInertiaBodies(random, body);
     Sym33Lanes m;
-    Kernels().math_world_inverse_inertia(body, m);
+    Kernels().world_inverse_inertia(body, m);
     for (std::size_t lane = 0; lane < kLaneWidth; ++lane) {
       const Vec3d diagonal = LaneVec3(body.inv_inertia_diagonal, lane);
       const Mat33d expected = reference::WorldInverseInertia<double>(
@@ -363,7 +363,7 @@ TEST_P(LaneMathTest, InverseInertiaTimesMatchesReference) {
     for (std::size_t lane = 0; lane < kLaneWidth; ++lane) {
       SetLaneVec3(v, lane, random.UnitVector() * random.LogUniform(1e-2, 1e2));
     }
-    Kernels().math_inverse_inertia_times(body, v, product);
+    Kernels().inverse_inertia_times(body, v, product);
     for (std::size_t lane = 0; lane < kLaneWidth; ++lane) {
       const Vec3d diagonal = LaneVec3(body.inv_inertia_diagonal, lane);
       const Vec3d vd = LaneVec3(v, lane);
@@ -459,7 +459,7 @@ TEST_P(LaneMathTest, InverseSym22MatchesReferenceAndFlagsExactlySingularLanes) {
       k.xy[lane] = float(0.5 * (m(0, 1) + m(1, 0)));
       k.yy[lane] = float(m(1, 1));
     }
-    Kernels().math_inverse_sym22(k, inverse, invertible);
+    Kernels().inverse_sym22(k, inverse, invertible);
     for (std::size_t lane = 0; lane < kLaneWidth; ++lane) {
       const MatrixKind kind = KindOfLane(block, lane);
       const std::string label = LaneLabel(std::string(KindName(kind)) + " 2x2", block, lane);
@@ -555,7 +555,7 @@ TEST_P(LaneMathTest, Inverse33MatchesReferenceAndFlagsExactlySingularLanes) {
         for (int j = 0; j < 3; ++j) k.m[i][j][lane] = float(m(i, j));
       }
     }
-    Kernels().math_inverse33(k, inverse, invertible);
+    Kernels().inverse33(k, inverse, invertible);
     for (std::size_t lane = 0; lane < kLaneWidth; ++lane) {
       const MatrixKind kind = KindOfLane(block, lane);
       const std::string label = LaneLabel(std::string(KindName(kind)) + " 3x3", block, lane);
@@ -601,10 +601,8 @@ TEST_P(LaneMathTest, Inverse33MatchesReferenceAndFlagsExactlySingularLanes) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(EveryTarget, LaneMathTest, ::testing::ValuesIn(SupportedKernels()),
-                         [](const ::testing::TestParamInfo<const PartKernels*>& info) {
-                           return TargetLabel(info.param);
-                         });
+INSTANTIATE_TEST_SUITE_P(EveryTarget, LaneMathTest, ::testing::ValuesIn(SupportedKernels<LaneMathKernels>()),
+                         TableName<LaneMathKernels>);
 
 }  // namespace
 }  // namespace manyworlds::testing

@@ -26,7 +26,9 @@
 #include "batch/part_binding.h"
 #include "batch/world_blocks.h"
 #include "kernels/dual_axis.h"
-#include "kernels/part_kernels.h"
+#include "kernels/dual_axis.h"
+#include "kernels/lane_math.h"
+#include "kernels/rack_and_pinion.h"
 #include "kernels/rack_and_pinion.h"
 #include "tests/test_support.h"
 
@@ -197,9 +199,16 @@ bool Changed(const std::array<float, N>& after, const std::array<float, N>& befo
   return !BitEqual(&after, &before, sizeof(after));
 }
 
-class PaddingTest : public ::testing::TestWithParam<const PartKernels*> {
+// Parametrised by target (through the lane-maths table, which exists for
+// every target); each part's table for that target is looked up.
+class PaddingTest : public ::testing::TestWithParam<const LaneMathKernels*> {
  protected:
-  const PartKernels& Kernels() const { return *GetParam(); }
+  template <class Table>
+  const Table& Kernels() const {
+    const Table* table = KernelsForTarget<Table>(GetParam()->target.bits);
+    EXPECT_NE(table, nullptr) << GetParam()->target.name;
+    return *table;
+  }
 };
 
 // ------------------------------------------------------------------ dual axis
@@ -227,7 +236,7 @@ DualAxisWorld DualAxisInputs(std::size_t world) {
   return in;
 }
 
-std::vector<WorldResult> RunDualAxis(const PartKernels& kernels, const Layout& layout) {
+std::vector<WorldResult> RunDualAxis(const DualAxisKernels& kernels, const Layout& layout) {
   BodyBlocks bodies({MotionType::kDynamic, MotionType::kDynamic}, kRealWorlds);
   const PartBinding binding =
       BindPart(bodies, "padding_slider", PartKind::kDualAxis, 0, 1);
@@ -257,11 +266,11 @@ std::vector<WorldResult> RunDualAxis(const PartKernels& kernels, const Layout& l
     FillPaddingWithGarbage(separation[0], real, random);
   }
   const BodyPair pair = PairInBlock(bodies, binding, 0);
-  kernels.dual_axis_calculate_properties(pair, geometry[0], parts[0]);
-  kernels.dual_axis_warm_start(pair, geometry[0], parts[0], 0.9f);
-  for (int i = 0; i < 3; ++i) kernels.dual_axis_solve_velocity(pair, geometry[0], parts[0]);
-  kernels.dual_axis_calculate_properties(pair, geometry[0], parts[0]);
-  kernels.dual_axis_solve_position(pair, geometry[0], separation[0], parts[0], 0.2f);
+  kernels.calculate_properties(pair, geometry[0], parts[0]);
+  kernels.warm_start(pair, geometry[0], parts[0], 0.9f);
+  for (int i = 0; i < 3; ++i) kernels.solve_velocity(pair, geometry[0], parts[0]);
+  kernels.calculate_properties(pair, geometry[0], parts[0]);
+  kernels.solve_position(pair, geometry[0], separation[0], parts[0], 0.2f);
 
   std::vector<WorldResult> results;
   for (std::size_t w = 0; w < kRealWorlds; ++w) {
@@ -274,7 +283,7 @@ std::vector<WorldResult> RunDualAxis(const PartKernels& kernels, const Layout& l
 }
 
 TEST_P(PaddingTest, DualAxisRealWorldsIgnorePaddingLanes) {
-  const std::vector<WorldResult> baseline = RunDualAxis(Kernels(), kBaseline);
+  const std::vector<WorldResult> baseline = RunDualAxis(Kernels<DualAxisKernels>(), kBaseline);
   // The sequence must really act on every world, or bit-identity proves nothing.
   for (std::size_t w = 0; w < kRealWorlds; ++w) {
     const DualAxisWorld in = DualAxisInputs(w);
@@ -291,7 +300,7 @@ TEST_P(PaddingTest, DualAxisRealWorldsIgnorePaddingLanes) {
     EXPECT_TRUE(std::isfinite(out.lambda[1]) && out.lambda[1] != 0.0f) << where;
   }
   for (const Layout& layout : kOtherLayouts) {
-    ExpectSameRealWorlds(RunDualAxis(Kernels(), layout), baseline, "dual axis", layout);
+    ExpectSameRealWorlds(RunDualAxis(Kernels<DualAxisKernels>(), layout), baseline, "dual axis", layout);
   }
 }
 
@@ -316,7 +325,7 @@ RackAndPinionWorld RackAndPinionInputs(std::size_t world) {
   return in;
 }
 
-std::vector<WorldResult> RunRackAndPinion(const PartKernels& kernels, const Layout& layout) {
+std::vector<WorldResult> RunRackAndPinion(const RackAndPinionKernels& kernels, const Layout& layout) {
   BodyBlocks bodies({MotionType::kDynamic, MotionType::kDynamic}, kRealWorlds);
   const PartBinding binding =
       BindPart(bodies, "padding_rack", PartKind::kRackAndPinion, 0, 1);
@@ -344,13 +353,13 @@ std::vector<WorldResult> RunRackAndPinion(const PartKernels& kernels, const Layo
     FillPaddingWithGarbage(error[0], real, random);
   }
   const BodyPair pair = PairInBlock(bodies, binding, 0);
-  kernels.rack_and_pinion_calculate_properties(pair, geometry[0], parts[0]);
-  kernels.rack_and_pinion_warm_start(pair, parts[0], 0.9f);
+  kernels.calculate_properties(pair, geometry[0], parts[0]);
+  kernels.warm_start(pair, parts[0], 0.9f);
   for (int i = 0; i < 3; ++i) {
-    kernels.rack_and_pinion_solve_velocity(pair, geometry[0], parts[0]);
+    kernels.solve_velocity(pair, geometry[0], parts[0]);
   }
-  kernels.rack_and_pinion_calculate_properties(pair, geometry[0], parts[0]);
-  kernels.rack_and_pinion_solve_position(pair, error[0], parts[0], 0.2f);
+  kernels.calculate_properties(pair, geometry[0], parts[0]);
+  kernels.solve_position(pair, error[0], parts[0], 0.2f);
 
   std::vector<WorldResult> results;
   for (std::size_t w = 0; w < kRealWorlds; ++w) {
@@ -362,7 +371,7 @@ std::vector<WorldResult> RunRackAndPinion(const PartKernels& kernels, const Layo
 }
 
 TEST_P(PaddingTest, RackAndPinionRealWorldsIgnorePaddingLanes) {
-  const std::vector<WorldResult> baseline = RunRackAndPinion(Kernels(), kBaseline);
+  const std::vector<WorldResult> baseline = RunRackAndPinion(Kernels<RackAndPinionKernels>(), kBaseline);
   // The sequence must really act on every world: the pinion's angular and the
   // rack's linear velocity, the rack's position and the impulse change.
   for (std::size_t w = 0; w < kRealWorlds; ++w) {
@@ -376,15 +385,13 @@ TEST_P(PaddingTest, RackAndPinionRealWorldsIgnorePaddingLanes) {
     EXPECT_TRUE(std::isfinite(out.lambda[0]) && out.lambda[0] != 0.0f) << where;
   }
   for (const Layout& layout : kOtherLayouts) {
-    ExpectSameRealWorlds(RunRackAndPinion(Kernels(), layout), baseline, "rack and pinion",
+    ExpectSameRealWorlds(RunRackAndPinion(Kernels<RackAndPinionKernels>(), layout), baseline, "rack and pinion",
                          layout);
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(EveryTarget, PaddingTest, ::testing::ValuesIn(SupportedKernels()),
-                         [](const ::testing::TestParamInfo<const PartKernels*>& info) {
-                           return TargetLabel(info.param);
-                         });
+INSTANTIATE_TEST_SUITE_P(EveryTarget, PaddingTest, ::testing::ValuesIn(SupportedKernels<LaneMathKernels>()),
+                         TableName<LaneMathKernels>);
 
 }  // namespace
 }  // namespace manyworlds::testing

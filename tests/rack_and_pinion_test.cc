@@ -10,7 +10,6 @@
 #include "batch/part_binding.h"
 #include "batch/part_state.h"
 #include "batch/world_blocks.h"
-#include "kernels/part_kernels.h"
 #include "manyworlds/error.h"
 #include "reference/rack_and_pinion_part.h"
 #include "tests/test_support.h"
@@ -35,7 +34,7 @@ LaneKind KindOfWorld(std::size_t world) {
   }
 }
 
-class RackAndPinionTest : public PartTestBase {
+class RackAndPinionTest : public PartTestBase<RackAndPinionKernels> {
  protected:
   void SetUp() override {
     SetUpBodies("rack", PartKind::kRackAndPinion);
@@ -85,7 +84,7 @@ class RackAndPinionTest : public PartTestBase {
 
   void CalculateProperties() {
     for (std::size_t block = 0; block < blocks(); ++block) {
-      kernels_->rack_and_pinion_calculate_properties(Pair(block), (*geometry_)[block],
+      kernels_->calculate_properties(Pair(block), (*geometry_)[block],
                                                      (*parts_)[block]);
     }
     for (std::size_t w = 0; w < worlds(); ++w) {
@@ -104,7 +103,7 @@ class RackAndPinionTest : public PartTestBase {
       }
     }
     for (std::size_t block = 0; block < blocks(); ++block) {
-      kernels_->rack_and_pinion_deactivate((*parts_)[block], flags[block]);
+      kernels_->deactivate((*parts_)[block], flags[block]);
     }
   }
 
@@ -128,7 +127,7 @@ class RackAndPinionTest : public PartTestBase {
     CompareVerb(
         "warm start",
         [&](std::size_t block) {
-          kernels_->rack_and_pinion_warm_start(Pair(block), (*parts_)[block], ratio);
+          kernels_->warm_start(Pair(block), (*parts_)[block], ratio);
           return false;
         },
         [&](std::size_t w, RefBody& b1, RefBody& b2) {
@@ -141,7 +140,7 @@ class RackAndPinionTest : public PartTestBase {
     CompareVerb(
         "velocity solve",
         [&](std::size_t block) {
-          return kernels_->rack_and_pinion_solve_velocity(Pair(block), (*geometry_)[block],
+          return kernels_->solve_velocity(Pair(block), (*geometry_)[block],
                                                           (*parts_)[block]);
         },
         [&](std::size_t w, RefBody& b1, RefBody& b2) {
@@ -154,7 +153,7 @@ class RackAndPinionTest : public PartTestBase {
     CompareVerb(
         "position solve",
         [&](std::size_t block) {
-          return kernels_->rack_and_pinion_solve_position(Pair(block), (*error_)[block],
+          return kernels_->solve_position(Pair(block), (*error_)[block],
                                                           (*parts_)[block], baumgarte);
         },
         [&](std::size_t w, RefBody& b1, RefBody& b2) {
@@ -185,7 +184,7 @@ TEST_P(RackAndPinionTest, CalculatePropertiesMatchesReference) {
     EXPECT_NEAR(part.effective_mass[lane], ref.EffectiveMass(),
                 Tolerance(ref.EffectiveMass()))
         << "1/K of world " << w;
-    if (lane == 0) kernels_->rack_and_pinion_is_active(part, active);
+    if (lane == 0) kernels_->is_active(part, active);
     EXPECT_EQ(active[lane] != 0.0f, ref.IsActive()) << "IsActive of world " << w;
     if (KindOfWorld(w) == LaneKind::kSingular) {
       EXPECT_EQ(active[lane], 0.0f) << "singular world " << w << " is active";
@@ -203,7 +202,7 @@ TEST_P(RackAndPinionTest, WarmStartWithRatioZeroAppliesNothing) {
   CalculateProperties();
   const BodyBlocks before = *bodies_;
   for (std::size_t block = 0; block < blocks(); ++block) {
-    kernels_->rack_and_pinion_warm_start(Pair(block), (*parts_)[block], 0.0f);
+    kernels_->warm_start(Pair(block), (*parts_)[block], 0.0f);
   }
   for (std::size_t w = 0; w < worlds(); ++w) {
     EXPECT_EQ(Lambda(w), 0.0) << "world " << w;
@@ -248,9 +247,9 @@ TEST_P(RackAndPinionTest, DeactivatedAndSingularLanesStayFiniteAndApplyNothing) 
   DeactivateFlaggedLanes();
   const BodyBlocks before = *bodies_;
   for (std::size_t block = 0; block < blocks(); ++block) {
-    kernels_->rack_and_pinion_warm_start(Pair(block), (*parts_)[block], 1.0f);
-    kernels_->rack_and_pinion_solve_velocity(Pair(block), (*geometry_)[block], (*parts_)[block]);
-    kernels_->rack_and_pinion_solve_position(Pair(block), (*error_)[block], (*parts_)[block],
+    kernels_->warm_start(Pair(block), (*parts_)[block], 1.0f);
+    kernels_->solve_velocity(Pair(block), (*geometry_)[block], (*parts_)[block]);
+    kernels_->solve_position(Pair(block), (*error_)[block], (*parts_)[block],
                                              0.2f);
   }
   for (std::size_t w = 0; w < worlds(); ++w) {
@@ -281,18 +280,18 @@ TEST_P(RackAndPinionTest, GetSetSaveRestoreOfAccumulatedImpulse) {
   }
 }
 
-std::vector<PartCase> AllCases() {
+std::vector<PartCase<RackAndPinionKernels>> AllCases() {
   static const std::vector<std::pair<MotionType, MotionType>> pairings = {
       {MotionType::kDynamic, MotionType::kDynamic},
       {MotionType::kKinematic, MotionType::kDynamic},
       {MotionType::kDynamic, MotionType::kKinematic},
       {MotionType::kKinematic, MotionType::kKinematic},
   };
-  return AllPartCases(pairings);
+  return AllPartCases<RackAndPinionKernels>(pairings);
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryTarget, RackAndPinionTest, ::testing::ValuesIn(AllCases()),
-                         PartCaseName);
+                         PartCaseName<RackAndPinionKernels>);
 
 TEST(RackAndPinionBinding, StaticBodyIsRefusedNamingTheConstraint) {
   const BodyBlocks bodies({MotionType::kStatic, MotionType::kDynamic}, 4);

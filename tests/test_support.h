@@ -21,7 +21,7 @@
 
 #include "batch/part_binding.h"
 #include "batch/world_blocks.h"
-#include "kernels/part_kernels.h"
+#include "kernels/kernel_table.h"
 #include "manyworlds/body_state.h"
 #include "manyworlds/lanes.h"
 #include "reference/body.h"
@@ -272,8 +272,9 @@ void CompareVerbOnEveryLane(const char* label, const BodyBlocks& bodies,
 }
 
 // One parameter set of a part test: target, world count, motion types.
+template <class Table>
 struct PartCase {
-  const PartKernels* kernels;
+  const Table* kernels;
   std::size_t world_count;
   MotionType motion1;
   MotionType motion2;
@@ -281,10 +282,11 @@ struct PartCase {
 
 // What every part test fixture holds: the case, the bodies of its worlds and
 // the part's binding to bodies 0 and 1.
-class PartTestBase : public ::testing::TestWithParam<PartCase> {
+template <class Table>
+class PartTestBase : public ::testing::TestWithParam<PartCase<Table>> {
  protected:
   void SetUpBodies(const char* constraint_name, PartKind kind) {
-    const PartCase& c = GetParam();
+    const PartCase<Table>& c = this->GetParam();
     kernels_ = c.kernels;
     bodies_.emplace(std::vector<MotionType>{c.motion1, c.motion2}, c.world_count);
     binding_ = BindPart(*bodies_, constraint_name, kind, 0, 1);
@@ -313,22 +315,29 @@ class PartTestBase : public ::testing::TestWithParam<PartCase> {
     }
   }
 
-  const PartKernels* kernels_ = nullptr;
+  const Table* kernels_ = nullptr;
   std::optional<BodyBlocks> bodies_;
   PartBinding binding_;
 };
 
 // Every supported target x TestWorldCounts() x the given motion pairings.
-inline std::vector<PartCase> AllPartCases(
+template <class Table>
+std::vector<PartCase<Table>> AllPartCases(
     const std::vector<std::pair<MotionType, MotionType>>& pairings);
 
 // Name of a kernel table for test names ("AVX2", "SCALAR", ...).
-inline std::string TargetLabel(const PartKernels* kernels) {
-  std::string name = kernels->target_name;
+inline std::string TargetLabel(const TargetInfo& target) {
+  std::string name = target.name;
   for (char& c : name) {
     if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
   }
   return name;
+}
+
+// gtest parameter name of a per-target test: the target's name.
+template <class Table>
+std::string TableName(const ::testing::TestParamInfo<const Table*>& info) {
+  return TargetLabel(info.param->target);
 }
 
 // The world counts every part test runs with: one world, a partial block,
@@ -338,10 +347,11 @@ inline const std::vector<std::size_t>& TestWorldCounts() {
   return counts;
 }
 
-inline std::vector<PartCase> AllPartCases(
+template <class Table>
+std::vector<PartCase<Table>> AllPartCases(
     const std::vector<std::pair<MotionType, MotionType>>& pairings) {
-  std::vector<PartCase> cases;
-  for (const PartKernels* kernels : SupportedKernels()) {
+  std::vector<PartCase<Table>> cases;
+  for (const Table* kernels : SupportedKernels<Table>()) {
     for (const std::size_t worlds : TestWorldCounts()) {
       for (const auto& [motion1, motion2] : pairings) {
         cases.push_back({kernels, worlds, motion1, motion2});
@@ -351,9 +361,10 @@ inline std::vector<PartCase> AllPartCases(
   return cases;
 }
 
-inline std::string PartCaseName(const ::testing::TestParamInfo<PartCase>& info) {
-  const PartCase& c = info.param;
-  return TargetLabel(c.kernels) + "_" + std::to_string(c.world_count) + "worlds_" +
+template <class Table>
+std::string PartCaseName(const ::testing::TestParamInfo<PartCase<Table>>& info) {
+  const PartCase<Table>& c = info.param;
+  return TargetLabel(c.kernels->target) + "_" + std::to_string(c.world_count) + "worlds_" +
          MotionTypeName(c.motion1) + "_" + MotionTypeName(c.motion2);
 }
 

@@ -18,7 +18,9 @@
 #include "batch/part_state.h"
 #include "batch/world_blocks.h"
 #include "hwy/highway.h"
-#include "kernels/part_kernels.h"
+#include "kernels/dual_axis.h"
+#include "kernels/lane_math.h"
+#include "kernels/rack_and_pinion.h"
 #include "manyworlds/error.h"
 #include "manyworlds/targets.h"
 #include "tests/test_support.h"
@@ -425,32 +427,43 @@ TEST(TargetsTest, SupportedTargetsIncludeScalarAndTheDispatchedOne) {
 }
 
 TEST(TargetsTest, DispatchedTableIsTheBestSupportedOne) {
-  ASSERT_FALSE(SupportedKernels().empty());
-  EXPECT_EQ(&DispatchedKernels(), SupportedKernels().front())
-      << "dispatched " << DispatchedKernels().target_name << ", best supported "
-      << SupportedKernels().front()->target_name;
-  EXPECT_EQ(DispatchedTargetName(), SupportedKernels().front()->target_name);
-  EXPECT_EQ(DispatchedVectorLanes(), SupportedKernels().front()->vector_lanes);
+  const auto& supported = SupportedKernels<LaneMathKernels>();
+  ASSERT_FALSE(supported.empty());
+  const LaneMathKernels& dispatched = DispatchedKernels<LaneMathKernels>();
+  EXPECT_EQ(&dispatched, supported.front())
+      << "dispatched " << dispatched.target.name << ", best supported "
+      << supported.front()->target.name;
+  EXPECT_EQ(DispatchedTargetName(), supported.front()->target.name);
+  EXPECT_EQ(DispatchedVectorLanes(), supported.front()->target.vector_lanes);
   // Best first: Highway's target bits grow as targets get worse.
-  for (std::size_t i = 1; i < SupportedKernels().size(); ++i) {
-    EXPECT_LT(SupportedKernels()[i - 1]->target, SupportedKernels()[i]->target)
-        << SupportedKernels()[i - 1]->target_name << " before " << SupportedKernels()[i]->target_name;
+  for (std::size_t i = 1; i < supported.size(); ++i) {
+    EXPECT_LT(supported[i - 1]->target.bits, supported[i]->target.bits)
+        << supported[i - 1]->target.name << " before " << supported[i]->target.name;
+  }
+  // Every part's tables cover the same targets in the same order.
+  const auto& dual_axis = SupportedKernels<DualAxisKernels>();
+  const auto& rack_and_pinion = SupportedKernels<RackAndPinionKernels>();
+  ASSERT_EQ(dual_axis.size(), supported.size());
+  ASSERT_EQ(rack_and_pinion.size(), supported.size());
+  for (std::size_t i = 0; i < supported.size(); ++i) {
+    EXPECT_EQ(dual_axis[i]->target.bits, supported[i]->target.bits);
+    EXPECT_EQ(rack_and_pinion[i]->target.bits, supported[i]->target.bits);
   }
 }
 
 TEST(TargetsTest, KernelsForTargetFindsEverySupportedTableAndScalar) {
-  for (const PartKernels* table : SupportedKernels()) {
-    EXPECT_EQ(KernelsForTarget(table->target), table) << table->target_name;
+  for (const LaneMathKernels* table : SupportedKernels<LaneMathKernels>()) {
+    EXPECT_EQ(KernelsForTarget<LaneMathKernels>(table->target.bits), table) << table->target.name;
     // A chunk never exceeds a block and blocks are whole chunks.
-    EXPECT_GE(table->vector_lanes, 1u) << table->target_name;
-    EXPECT_LE(table->vector_lanes, kLaneWidth) << table->target_name;
-    EXPECT_EQ(kLaneWidth % table->vector_lanes, 0u) << table->target_name;
+    EXPECT_GE(table->target.vector_lanes, 1u) << table->target.name;
+    EXPECT_LE(table->target.vector_lanes, kLaneWidth) << table->target.name;
+    EXPECT_EQ(kLaneWidth % table->target.vector_lanes, 0u) << table->target.name;
   }
-  const PartKernels* scalar = KernelsForTarget(HWY_SCALAR);
+  const LaneMathKernels* scalar = KernelsForTarget<LaneMathKernels>(HWY_SCALAR);
   ASSERT_NE(scalar, nullptr) << "no kernel table for HWY_SCALAR";
-  EXPECT_EQ(scalar->vector_lanes, 1u);
-  EXPECT_STREQ(scalar->target_name, "SCALAR");
-  EXPECT_EQ(KernelsForTarget(0), nullptr);
+  EXPECT_EQ(scalar->target.vector_lanes, 1u);
+  EXPECT_STREQ(scalar->target.name, "SCALAR");
+  EXPECT_EQ(KernelsForTarget<LaneMathKernels>(0), nullptr);
 }
 
 }  // namespace
