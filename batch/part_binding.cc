@@ -8,8 +8,17 @@ namespace manyworlds {
 
 const char* PartKindName(PartKind kind) {
   switch (kind) {
+    case PartKind::kAxis: return "axis";
     case PartKind::kDualAxis: return "dual_axis";
+    case PartKind::kPoint: return "point";
+    case PartKind::kHingeRotation: return "hinge_rotation";
+    case PartKind::kRotationEuler: return "rotation_euler";
+    case PartKind::kRotationQuat: return "rotation_quat";
+    case PartKind::kAngle: return "angle";
     case PartKind::kRackAndPinion: return "rack_and_pinion";
+    case PartKind::kGear: return "gear";
+    case PartKind::kIndependentAxis: return "independent_axis";
+    case PartKind::kSwingTwist: return "swing_twist";
   }
   return "unknown";
 }
@@ -40,16 +49,18 @@ PartBinding BindPart(const BodyBlocks& bodies, std::string constraint_name,
     throw SceneError(where + ": body1 and body2 are both body " +
                      std::to_string(body1) + "; a part needs two bodies");
   }
-  if (kind == PartKind::kRackAndPinion) {
+  if (kind == PartKind::kRackAndPinion || kind == PartKind::kGear) {
     // Jolt reads both bodies' motion properties, which static bodies lack.
-    const char* roles[2] = {"body1 (pinion)", "body2 (rack)"};
+    const bool rack = kind == PartKind::kRackAndPinion;
+    const char* roles[2] = {rack ? "body1 (pinion)" : "body1 (gear 1)",
+                            rack ? "body2 (rack)" : "body2 (gear 2)"};
     const std::size_t indices[2] = {body1, body2};
     for (int i = 0; i < 2; ++i) {
       if (bodies.motion_type(indices[i]) == MotionType::kStatic) {
         throw SceneError(where + ": " + roles[i] + " = body " +
-                         std::to_string(indices[i]) +
-                         " is static; both bodies of a rack-and-pinion must be "
-                         "kinematic or dynamic");
+                         std::to_string(indices[i]) + " is static; both bodies of a " +
+                         (rack ? "rack-and-pinion" : "gear") +
+                         " must be kinematic or dynamic");
       }
     }
   }

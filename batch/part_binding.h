@@ -12,8 +12,17 @@
 namespace manyworlds {
 
 enum class PartKind {
+  kAxis,
   kDualAxis,
+  kPoint,
+  kHingeRotation,
+  kRotationEuler,
+  kRotationQuat,
+  kAngle,
   kRackAndPinion,
+  kGear,
+  kIndependentAxis,
+  kSwingTwist,
 };
 
 const char* PartKindName(PartKind kind);
@@ -26,8 +35,8 @@ struct PartBinding {
 };
 
 // Throws SceneError if the bodies do not exist, are the same body, or have a
-// motion type the part cannot work with (rack-and-pinion: no static body,
-// spec 1.5).
+// motion type the part cannot work with (rack-and-pinion and gear: no static
+// body, spec 1.5).
 PartBinding BindPart(const BodyBlocks& bodies, std::string constraint_name,
                      PartKind kind, std::size_t body1, std::size_t body2);
 

@@ -7,11 +7,11 @@
 #include <cstddef>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "batch/world_blocks.h"
-#include "kernels/dual_axis.h"
-#include "kernels/rack_and_pinion.h"
+#include "manyworlds/lanes.h"
 
 namespace manyworlds {
 
@@ -40,25 +40,49 @@ void RestorePartState(PartBlocks<PartLanes>& parts,
   }
 }
 
-inline std::array<float, 2> GetTotalLambda(const PartBlocks<DualAxisLanes>& parts,
-                                           std::size_t world) {
-  const Vec2Lanes& lambda = parts[world / kLaneWidth].persistent.total_lambda;
-  return {lambda.x[world % kLaneWidth], lambda.y[world % kLaneWidth]};
+// One lane of a lane struct as plain numbers, and back.
+inline float ReadLaneValue(const LaneArray& field, std::size_t lane) {
+  return field[lane];
 }
-inline void SetTotalLambda(PartBlocks<DualAxisLanes>& parts, std::size_t world,
+inline std::array<float, 2> ReadLaneValue(const Vec2Lanes& field, std::size_t lane) {
+  return {field.x[lane], field.y[lane]};
+}
+inline std::array<float, 3> ReadLaneValue(const Vec3Lanes& field, std::size_t lane) {
+  return {field.x[lane], field.y[lane], field.z[lane]};
+}
+inline void WriteLaneValue(LaneArray& field, std::size_t lane, float value) {
+  field[lane] = value;
+}
+inline void WriteLaneValue(Vec2Lanes& field, std::size_t lane,
                            const std::array<float, 2>& value) {
-  Vec2Lanes& lambda = parts[world / kLaneWidth].persistent.total_lambda;
-  lambda.x[world % kLaneWidth] = value[0];
-  lambda.y[world % kLaneWidth] = value[1];
+  field.x[lane] = value[0];
+  field.y[lane] = value[1];
+}
+inline void WriteLaneValue(Vec3Lanes& field, std::size_t lane,
+                           const std::array<float, 3>& value) {
+  field.x[lane] = value[0];
+  field.y[lane] = value[1];
+  field.z[lane] = value[2];
 }
 
-inline float GetTotalLambda(const PartBlocks<RackAndPinionLanes>& parts,
-                            std::size_t world) {
-  return parts[world / kLaneWidth].persistent.total_lambda[world % kLaneWidth];
+// Accumulated impulse of one world (Jolt's GetTotalLambda): a float, or an
+// array for parts with 2 or 3 rows. Parts with several independent impulses
+// (swing-twist) name them in their own Persistent struct instead.
+template <class PartLanes>
+auto GetTotalLambda(const PartBlocks<PartLanes>& parts, std::size_t world) {
+  return ReadLaneValue(parts[world / kLaneWidth].persistent.total_lambda,
+                       world % kLaneWidth);
 }
-inline void SetTotalLambda(PartBlocks<RackAndPinionLanes>& parts, std::size_t world,
-                           float value) {
-  parts[world / kLaneWidth].persistent.total_lambda[world % kLaneWidth] = value;
+
+template <class PartLanes>
+using TotalLambdaValue = decltype(ReadLaneValue(
+    std::declval<const PartLanes&>().persistent.total_lambda, std::size_t{0}));
+
+template <class PartLanes>
+void SetTotalLambda(PartBlocks<PartLanes>& parts, std::size_t world,
+                    const TotalLambdaValue<PartLanes>& value) {
+  WriteLaneValue(parts[world / kLaneWidth].persistent.total_lambda,
+                 world % kLaneWidth, value);
 }
 
 }  // namespace manyworlds

@@ -10,6 +10,7 @@
 #include "batch/part_binding.h"
 #include "batch/part_state.h"
 #include "batch/world_blocks.h"
+#include "kernels/dual_axis.h"
 #include "reference/dual_axis_part.h"
 #include "tests/test_support.h"
 

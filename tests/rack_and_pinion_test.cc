@@ -11,6 +11,7 @@
 #include "batch/part_state.h"
 #include "batch/world_blocks.h"
 #include "manyworlds/error.h"
+#include "kernels/rack_and_pinion.h"
 #include "reference/rack_and_pinion_part.h"
 #include "tests/test_support.h"
 
