@@ -56,12 +56,11 @@ using VerbFunction = bool (*)(Batch&, std::size_t iteration);
 template <class Batch, class Table>
 bool RegisterPartBenchmarks(
     const char* part, std::vector<std::pair<const char*, VerbFunction<Batch>>> verbs) {
-  class Run final : public VerbRun {
+  class BatchRun final : public VerbRun {
    public:
-    Run(const Table& kernels, std::size_t worlds, VerbFunction<Batch> verb)
+    BatchRun(const Table& kernels, std::size_t worlds, VerbFunction<Batch> verb)
         : batch_(kernels, worlds), verb_(verb) {}
-    bool Run_(std::size_t iteration) { return verb_(batch_, iteration); }
-    bool Run(std::size_t iteration) override { return Run_(iteration); }
+    bool Run(std::size_t iteration) override { return verb_(batch_, iteration); }
     std::string Insane() const override { return batch_.Insane(); }
 
    private:
@@ -75,7 +74,7 @@ bool RegisterPartBenchmarks(
                        std::size_t worlds) -> std::unique_ptr<VerbRun> {
            const Table* kernels = KernelsForTarget<Table>(target.bits);
            if (kernels == nullptr) return nullptr;
-           return std::make_unique<Run>(*kernels, worlds, verb);
+           return std::make_unique<BatchRun>(*kernels, worlds, verb);
          }});
   }
   return true;
