@@ -40,14 +40,20 @@ const Table* KernelsForTarget(std::int64_t target) {
 
 namespace detail {
 
+// One lock for every table type: the target restriction below is global.
+inline std::mutex& TargetRestrictionMutex() {
+  static std::mutex mutex;
+  return mutex;
+}
+
 // Highway only dispatches to its chosen target; to reach the others we
 // restrict the supported set to one target at a time (the mechanism of
 // Highway's own per-target tests), then restore normal dispatch. Serialised,
-// because the restriction is global.
+// because the restriction is global; each table collects once (on first use),
+// so do that before starting threads that dispatch Highway code themselves.
 template <class Table, class Dispatch>
 std::vector<const Table*> CollectSupportedTables(Dispatch dispatch) {
-  static std::mutex mutex;
-  const std::lock_guard<std::mutex> lock(mutex);
+  const std::lock_guard<std::mutex> lock(TargetRestrictionMutex());
   std::vector<const Table*> tables;
   for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
     hwy::SetSupportedTargetsForTest(target);
