@@ -400,6 +400,285 @@ HWY_INLINE void ClearWhere(LaneMask mask, LaneArray& field, std::size_t offset) 
 // True if any lane of the mask is set (for "did any world apply an impulse").
 HWY_INLINE bool AnyLane(LaneMask mask) { return !hn::AllFalse(LaneTag(), mask); }
 
+// ------------------------------------- unit vectors (added with hinge rotation)
+
+// v / |v|; a zero vector stays zero instead of becoming NaN, so zeroed
+// padding lanes stay finite. (FLT_MIN changes no non-zero float vector whose
+// squared length is a normal float.)
+HWY_INLINE Vec3 Normalize(const Vec3& v) {
+  const LaneVec length_squared = hn::Max(LengthSquared(v), Splat(1.17549435e-38f));
+  return Scale(v, hn::Div(Splat(1.0f), hn::Sqrt(length_squared)));
+}
+
+// A unit vector perpendicular to the unit vector v, chosen as Jolt's
+// Vec3::GetNormalizedPerpendicular does (per lane): (z, 0, -x)/sqrt(x^2+z^2) if
+// |x| > |y|, else (0, z, -y)/sqrt(y^2+z^2). The choice decides the basis of the
+// hinge's two rows, so it must match Jolt's, ties (|x| == |y|) included.
+// The zero vector (padding lanes) gives zero, not NaN.
+HWY_INLINE Vec3 NormalizedPerpendicular(const Vec3& v) {
+  const LaneMask use_x = hn::Gt(hn::Abs(v.x), hn::Abs(v.y));
+  const LaneVec x_or_y = hn::IfThenElse(use_x, v.x, v.y);
+  // For a unit v the squared length is >= 1/2, so the floor changes nothing.
+  const LaneVec length_squared = hn::Max(hn::MulAdd(x_or_y, x_or_y, hn::Mul(v.z, v.z)),
+                                         Splat(1.17549435e-38f));
+  const LaneVec inv_length = hn::Div(Splat(1.0f), hn::Sqrt(length_squared));
+  return {hn::IfThenElseZero(use_x, hn::Mul(v.z, inv_length)),
+          hn::IfThenZeroElse(use_x, hn::Mul(v.z, inv_length)),
+          hn::Neg(hn::Mul(x_or_y, inv_length))};
+}
+
+// ------------------------------------------ end of the hinge-rotation helpers
+
+// ---------------------------------------- angles: atan, atan2, wrap (begin)
+// Added with the swing-twist part; Highway 1.0.3's contrib/math has no Atan2,
+// so all three are written here from polynomials.
+
+// pi and pi/2 as the nearest float, and the float nearest to the rest of
+// pi/2 (adding it last makes atan's pi/2 + r and pi/4 + r accurate to
+// ~1 ulp instead of ~1.5).
+inline constexpr float kPiHigh = 3.14159274101257324f;
+inline constexpr float kHalfPiHigh = 1.57079637050628662f;
+inline constexpr float kHalfPiLow = -4.37113882867379289e-8f;
+
+// atan(t) for t >= 0 (including +inf). Cephes atanf: reduce to |r| <=
+// tan(pi/8) with atan(t) = pi/2 + atan(-1/t) above tan(3 pi/8) and
+// pi/4 + atan((t - 1)/(t + 1)) above tan(pi/8), then the degree-9 odd minimax
+// polynomial. One division whatever the branch (selects, not branches).
+HWY_INLINE LaneVec AtanOfNonNegative(LaneVec t) {
+  const LaneVec one = Splat(1.0f);
+  const LaneMask above_3pi_8 = hn::Gt(t, Splat(2.414213562373095f));
+  const LaneMask above_pi_8 = hn::Gt(t, Splat(0.4142135623730950f));
+  const LaneVec numerator = hn::IfThenElse(
+      above_3pi_8, hn::Neg(one), hn::IfThenElse(above_pi_8, hn::Sub(t, one), t));
+  const LaneVec denominator = hn::IfThenElse(
+      above_3pi_8, t, hn::IfThenElse(above_pi_8, hn::Add(t, one), one));
+  const LaneVec r = hn::Div(numerator, denominator);
+  const LaneVec offset_high = hn::IfThenElse(
+      above_3pi_8, Splat(kHalfPiHigh),
+      hn::IfThenElseZero(above_pi_8, Splat(0.5f * kHalfPiHigh)));
+  const LaneVec offset_low = hn::IfThenElse(
+      above_3pi_8, Splat(kHalfPiLow),
+      hn::IfThenElseZero(above_pi_8, Splat(0.5f * kHalfPiLow)));
+  const LaneVec z = hn::Mul(r, r);
+  LaneVec p = Splat(8.05374449538e-2f);
+  p = hn::MulAdd(p, z, Splat(-1.38776856032e-1f));
+  p = hn::MulAdd(p, z, Splat(1.99777106478e-1f));
+  p = hn::MulAdd(p, z, Splat(-3.33329491539e-1f));
+  // r + r z p, then the offset's low part, then its high part: smallest first.
+  const LaneVec atan_r = hn::MulAdd(hn::Mul(p, z), r, r);
+  return hn::Add(offset_high, hn::Add(atan_r, offset_low));
+}
+
+// atan(x) for every float: odd, so atan(|x|) with the sign of x (atan(-0) =
+// -0, atan(+-inf) = +-pi/2, NaN stays NaN).
+HWY_INLINE LaneVec Atan(LaneVec x) {
+  return hn::CopySign(AtanOfNonNegative(hn::Abs(x)), x);
+}
+
+// atan2(y, x) with the C library's quadrants and special cases: the sign of
+// y (also of +-0) gives the sign of the result, a negative x (also -0) the
+// half plane, so atan2(+-0, +0) = +-0, atan2(+-0, -0) = +-pi, atan2(y, +-0) =
+// +-pi/2, atan2(+-inf, +-inf) = +-pi/4 or +-3pi/4; NaN in, NaN out.
+// The smaller magnitude is divided by the larger, so the ratio is in [0, 1]
+// and never overflows.
+HWY_INLINE LaneVec Atan2(LaneVec y, LaneVec x) {
+  const LaneVec abs_x = hn::Abs(x);
+  const LaneVec abs_y = hn::Abs(y);
+  const LaneMask y_larger = hn::Lt(abs_x, abs_y);  // false for NaN: NaN / ... = NaN
+  const LaneVec smaller = hn::IfThenElse(y_larger, abs_x, abs_y);
+  const LaneVec larger = hn::IfThenElse(y_larger, abs_y, abs_x);
+  // Equal magnitudes: ratio 1 (inf / inf would be NaN), or 0 when both are
+  // zero (0 / 0 would be NaN).
+  const LaneMask equal = hn::Eq(smaller, larger);
+  const LaneVec equal_ratio = hn::IfThenElseZero(hn::Ne(larger, Zero()), Splat(1.0f));
+  const LaneVec ratio =
+      hn::IfThenElse(equal, equal_ratio, hn::Div(smaller, larger));
+  LaneVec angle = AtanOfNonNegative(ratio);  // in [0, pi/4]
+  // atan(|y|/|x|) = pi/2 - atan(|x|/|y|)
+  angle = hn::IfThenElse(y_larger, hn::Sub(Splat(kHalfPiHigh), angle), angle);
+  // Left half plane, including x = -0: pi - angle.
+  const LaneMask x_negative = hn::Lt(hn::CopySign(Splat(1.0f), x), Zero());
+  angle = hn::IfThenElse(x_negative, hn::Sub(Splat(kPiHigh), angle), angle);
+  return hn::CopySign(angle, y);
+}
+
+// x - turns * 2 pi with 2 pi in three parts (Cody-Waite): the first two
+// products are exact for |turns| < 2^13, so the result is x minus whole turns
+// of the true 2 pi, rounded about once.
+HWY_INLINE LaneVec SubtractTurns(LaneVec x, LaneVec turns) {
+  LaneVec r = hn::NegMulAdd(turns, Splat(6.28125f), x);
+  r = hn::NegMulAdd(turns, Splat(1.93500518798828125e-3f), r);
+  return hn::NegMulAdd(turns, Splat(3.01991598195675286e-7f), r);
+}
+
+// Jolt's CenterAngleAroundZero (spec 5) without its loop: x - 2 pi k with
+// k = round(x / 2 pi), accurate for |x| up to ~50000 (2^13 turns).
+// Semantics of the loop kept exactly where it matters:
+//  - |x| <= pi (float pi) returns x bit for bit (k = 0), including +-pi and -0;
+//  - the result is in [-pi, pi]; an input that lands on the boundary gives
+//    +pi when x > 0 and -pi when x < 0, as the loop does (it stops at the
+//    first value inside the range).
+HWY_INLINE LaneVec CenterAngleAroundZero(LaneVec x) {
+  const LaneVec pi = Splat(kPiHigh);
+  const LaneVec one = Splat(1.0f);
+  LaneVec turns = hn::Round(hn::Mul(x, Splat(0.159154943091895336f)));
+  const LaneVec first = SubtractTurns(x, turns);
+  // x / 2 pi rounded in float can pick the neighbouring turn near odd
+  // multiples of pi: take one turn more or less and reduce again (instead of
+  // adding a float 2 pi, whose error is 0.7 ulp of pi).
+  turns = hn::Add(turns, hn::IfThenElseZero(hn::Gt(first, pi), one));
+  turns = hn::Sub(turns, hn::IfThenElseZero(hn::Lt(first, hn::Neg(pi)), one));
+  const LaneVec r = SubtractTurns(x, turns);
+  // On the boundary the loop keeps the sign of x. (Inside the range turns is
+  // 0: pi * 1/(2 pi) rounds to exactly 0.5, which rounds to even 0, so r is
+  // x bit for bit there, and this select keeps +-pi as they are.)
+  return hn::IfThenElse(hn::Eq(hn::Abs(r), pi), hn::CopySign(pi, x), r);
+}
+// ------------------------------------------ angles: atan, atan2, wrap (end)
+
+// ------------- 3x3 storage, quaternion from matrix (begin)
+// Added with the point and rotation Euler/quat parts.
+
+HWY_INLINE Sym33 LoadSym33(const Sym33Lanes& s, std::size_t offset) {
+  return {Load(s.xx, offset), Load(s.xy, offset), Load(s.xz, offset),
+          Load(s.yy, offset), Load(s.yz, offset), Load(s.zz, offset)};
+}
+HWY_INLINE void StoreSym33(const Sym33& s, Sym33Lanes& out, std::size_t offset) {
+  Store(s.xx, out.xx, offset);
+  Store(s.xy, out.xy, offset);
+  Store(s.xz, out.xz, offset);
+  Store(s.yy, out.yy, offset);
+  Store(s.yz, out.yz, offset);
+  Store(s.zz, out.zz, offset);
+}
+HWY_INLINE Mat33 LoadMat33(const Mat33Lanes& m, std::size_t offset) {
+  Mat33 out;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) out.m[i][j] = Load(m.m[i][j], offset);
+  }
+  return out;
+}
+HWY_INLINE void StoreMat33(const Mat33& m, Mat33Lanes& out, std::size_t offset) {
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) Store(m.m[i][j], out.m[i][j], offset);
+  }
+}
+
+HWY_INLINE Sym33 ZeroSym33() {
+  return {Zero(), Zero(), Zero(), Zero(), Zero(), Zero()};
+}
+HWY_INLINE Mat33 ZeroMat33() {
+  Mat33 zero;
+  for (auto& row : zero.m) row[0] = row[1] = row[2] = Zero();
+  return zero;
+}
+
+// Lanes where any component is non-zero (an impulse was applied, a matrix is
+// not the zero of a deactivated part).
+HWY_INLINE LaneMask AnyComponentNonZero(const Vec3& v) {
+  return hn::Or(hn::Or(hn::Ne(v.x, Zero()), hn::Ne(v.y, Zero())), hn::Ne(v.z, Zero()));
+}
+HWY_INLINE LaneMask AnyComponentNonZero(const Sym33& s) {
+  return hn::Or(AnyComponentNonZero(Vec3{s.xx, s.xy, s.xz}),
+                AnyComponentNonZero(Vec3{s.yy, s.yz, s.zz}));
+}
+
+// Every field = 0 in the lanes of `mask` (Deactivate's write).
+HWY_INLINE void ClearWhere(LaneMask mask, Vec3Lanes& v, std::size_t offset) {
+  ClearWhere(mask, v.x, offset);
+  ClearWhere(mask, v.y, offset);
+  ClearWhere(mask, v.z, offset);
+}
+HWY_INLINE void ClearWhere(LaneMask mask, Sym33Lanes& s, std::size_t offset) {
+  for (LaneArray* field : {&s.xx, &s.xy, &s.xz, &s.yy, &s.yz, &s.zz}) {
+    ClearWhere(mask, *field, offset);
+  }
+}
+HWY_INLINE void ClearWhere(LaneMask mask, Mat33Lanes& m, std::size_t offset) {
+  for (auto& row : m.m) {
+    for (LaneArray& field : row) ClearWhere(mask, field, offset);
+  }
+}
+
+HWY_INLINE Sym33 Add(const Sym33& a, const Sym33& b) {
+  return {hn::Add(a.xx, b.xx), hn::Add(a.xy, b.xy), hn::Add(a.xz, b.xz),
+          hn::Add(a.yy, b.yy), hn::Add(a.yz, b.yz), hn::Add(a.zz, b.zz)};
+}
+
+HWY_INLINE Mat33 Transpose(const Mat33& a) {
+  Mat33 t;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) t.m[i][j] = a.m[j][i];
+  }
+  return t;
+}
+
+// a * b for a symmetric a (column j of the product is a * column j of b).
+HWY_INLINE Mat33 Multiply(const Sym33& a, const Mat33& b) {
+  Mat33 product;
+  for (int j = 0; j < 3; ++j) {
+    const Vec3 column = Multiply(a, Vec3{b.m[0][j], b.m[1][j], b.m[2][j]});
+    product.m[0][j] = column.x;
+    product.m[1][j] = column.y;
+    product.m[2][j] = column.z;
+  }
+  return product;
+}
+
+// q where w >= 0, else -q: the same rotation, the shorter way round (Jolt's
+// EnsureWPositive).
+HWY_INLINE Quat EnsureWPositive(const Quat& q) {
+  const LaneMask negative = hn::Lt(q.w, Zero());
+  return {hn::IfThenElse(negative, hn::Neg(q.x), q.x),
+          hn::IfThenElse(negative, hn::Neg(q.y), q.y),
+          hn::IfThenElse(negative, hn::Neg(q.z), q.z),
+          hn::IfThenElse(negative, hn::Neg(q.w), q.w)};
+}
+
+// Unit quaternion of a rotation matrix (Shepperd's method, branch choice as
+// Jolt's Mat44::GetQuaternion): trace >= 0 solves for w first; otherwise for
+// the component of the largest diagonal entry (first one on ties), which keeps
+// the square root away from zero. One square root and one division per lane:
+// the branch only selects what goes into them. The result's sign follows the
+// branch (w > 0, or the chosen component > 0).
+HWY_INLINE Quat QuatFromRotationMatrix(const Mat33& m) {
+  const LaneVec one = Splat(1.0f), half = Splat(0.5f);
+  const LaneVec m00 = m.m[0][0], m11 = m.m[1][1], m22 = m.m[2][2];
+  const LaneMask solve_w = hn::Ge(hn::Add(hn::Add(m00, m11), m22), Zero());
+  const LaneMask y_over_x = hn::Gt(m11, m00);
+  const LaneVec largest_xy = hn::IfThenElse(y_over_x, m11, m00);
+  const LaneMask solve_z = hn::AndNot(solve_w, hn::Gt(m22, largest_xy));
+  const LaneMask solve_y =
+      hn::AndNot(solve_w, hn::AndNot(hn::Gt(m22, largest_xy), y_over_x));
+  const LaneMask solve_x = hn::AndNot(solve_w, hn::AndNot(solve_z, hn::Not(y_over_x)));
+  // 4 c^2 - 1 for the component c solved first: 1 + trace for w,
+  // 1 + 2 m_ii - trace for x, y, z.
+  const LaneVec radicand = hn::IfThenElse(
+      solve_w, hn::Add(hn::Add(hn::Add(m00, m11), m22), one),
+      hn::IfThenElse(solve_x, hn::Add(hn::Sub(m00, hn::Add(m11, m22)), one),
+                     hn::IfThenElse(solve_y, hn::Add(hn::Sub(m11, hn::Add(m22, m00)), one),
+                                    hn::Add(hn::Sub(m22, hn::Add(m00, m11)), one))));
+  const LaneVec s = hn::Sqrt(radicand);
+  const LaneVec inv_4c = hn::Div(half, s);  // 1 / (4 c) with c = s / 2
+  const LaneVec solved = hn::Mul(half, s);
+  // 4 w x, 4 w y, 4 w z, 4 x y, 4 x z, 4 y z from the off-diagonal entries.
+  const LaneVec wx = hn::Mul(hn::Sub(m.m[2][1], m.m[1][2]), inv_4c);
+  const LaneVec wy = hn::Mul(hn::Sub(m.m[0][2], m.m[2][0]), inv_4c);
+  const LaneVec wz = hn::Mul(hn::Sub(m.m[1][0], m.m[0][1]), inv_4c);
+  const LaneVec xy = hn::Mul(hn::Add(m.m[0][1], m.m[1][0]), inv_4c);
+  const LaneVec xz = hn::Mul(hn::Add(m.m[0][2], m.m[2][0]), inv_4c);
+  const LaneVec yz = hn::Mul(hn::Add(m.m[1][2], m.m[2][1]), inv_4c);
+  // Each other component is its product with the solved one over 4 c.
+  auto pick = [&](LaneVec if_w, LaneVec if_x, LaneVec if_y, LaneVec if_z) {
+    return hn::IfThenElse(
+        solve_w, if_w,
+        hn::IfThenElse(solve_x, if_x, hn::IfThenElse(solve_y, if_y, if_z)));
+  };
+  return {pick(wx, solved, xy, xz), pick(wy, xy, solved, yz),
+          pick(wz, xz, yz, solved), pick(solved, wx, wy, wz)};
+}
+// --------------- 3x3 storage, quaternion from matrix (end)
+
 }  // namespace HWY_NAMESPACE
 }  // namespace manyworlds
 HWY_AFTER_NAMESPACE();

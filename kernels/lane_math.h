@@ -26,6 +26,10 @@ struct LaneMathKernels {
   void (*inverse_sym22)(const Sym22Lanes& k, Sym22Lanes& inverse,
                         LaneFlags& invertible);
   void (*inverse33)(const Mat33Lanes& k, Mat33Lanes& inverse, LaneFlags& invertible);
+  // Angles (swing-twist): atan, atan2(y, x), CenterAngleAroundZero.
+  void (*atan)(const LaneArray& x, LaneArray& angle);
+  void (*atan2)(const LaneArray& y, const LaneArray& x, LaneArray& angle);
+  void (*center_angle_around_zero)(const LaneArray& x, LaneArray& centered);
 };
 
 MANYWORLDS_DECLARE_KERNEL_TABLE(LaneMathKernels)

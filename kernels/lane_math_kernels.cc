@@ -123,6 +123,22 @@ void MathInverse33(const Mat33Lanes& k, Mat33Lanes& inverse, LaneFlags& invertib
   });
 }
 
+void MathAtan(const LaneArray& x, LaneArray& angle) {
+  ForEachChunk([&](std::size_t offset) { Store(Atan(Load(x, offset)), angle, offset); });
+}
+
+void MathAtan2(const LaneArray& y, const LaneArray& x, LaneArray& angle) {
+  ForEachChunk([&](std::size_t offset) {
+    Store(Atan2(Load(y, offset), Load(x, offset)), angle, offset);
+  });
+}
+
+void MathCenterAngleAroundZero(const LaneArray& x, LaneArray& centered) {
+  ForEachChunk([&](std::size_t offset) {
+    Store(CenterAngleAroundZero(Load(x, offset)), centered, offset);
+  });
+}
+
 }  // namespace
 
 const LaneMathKernels* GetLaneMathKernels() {
@@ -133,6 +149,8 @@ const LaneMathKernels* GetLaneMathKernels() {
       &MathQuatFromAxisAngle,   &MathAddRotationStep,
       &MathWorldInverseInertia, &MathInverseInertiaTimes,
       &MathInverseSym22,        &MathInverse33,
+      &MathAtan,                &MathAtan2,
+      &MathCenterAngleAroundZero,
   };
   return &kTable;
 }

@@ -128,4 +128,121 @@ T CenterAngleAroundZero(T angle) {
   return angle;
 }
 
+// ---------------------------------------------------------------------------
+// Helpers added with the axis/angle/point/rotation/hinge/gear/independent-axis/
+// swing-twist reference parts (spec 2.4-2.12 and 5). General maths only.
+// ---------------------------------------------------------------------------
+
+// [v]×: the matrix with [v]× w = v × w.
+template <class T>
+Mat33<T> CrossProductMatrix(const Vec3<T>& v) {
+  Mat33<T> m;
+  m << T(0), -v.z(), v.y(),  //
+      v.z(), T(0), -v.x(),   //
+      -v.y(), v.x(), T(0);
+  return m;
+}
+
+// q or −q, whichever has w >= 0 (Jolt's EnsureWPositive: w == 0 keeps q). Both
+// describe the same rotation; w >= 0 is the one of angle <= π.
+template <class T>
+Quat<T> EnsureWPositive(const Quat<T>& q) {
+  return q.w() >= T(0) ? q : Quat<T>(-q.w(), -q.x(), -q.y(), -q.z());
+}
+
+// A unit vector perpendicular to unit v, chosen as Jolt's GetNormalizedPerpendicular
+// (spec 2.5): zero the smaller of |x|, |y| and swap the other with z:
+//   |x| > |y|:  (z, 0, −x) / √(x² + z²)      else:  (0, z, −y) / √(y² + z²)
+template <class T>
+Vec3<T> NormalizedPerpendicular(const Vec3<T>& v) {
+  if (std::abs(v.x()) > std::abs(v.y())) {
+    return Vec3<T>(v.z(), T(0), -v.x()) / std::sqrt(v.x() * v.x() + v.z() * v.z());
+  }
+  return Vec3<T>(T(0), v.z(), -v.y()) / std::sqrt(v.y() * v.y() + v.z() * v.z());
+}
+
+// Rotation angle of q about a unit axis, assuming q rotates about that axis (spec 3,
+// Hinge): 2·atan((xyz·axis)/w) in (−π, π], and π when w == 0 (Jolt's
+// GetRotationAngle). libm atan, not Jolt's polynomial.
+template <class T>
+T QuatRotationAngle(const Quat<T>& q, const Vec3<T>& axis) {
+  if (q.w() == T(0)) return std::numbers::pi_v<T>;
+  return T(2) * std::atan(q.vec().dot(axis) / q.w());
+}
+
+// The twist of q about a unit axis: the rotation about the axis closest to q,
+// normalize(axis·(xyz·axis), w); identity when that is zero (spec 5, GetTwist).
+template <class T>
+Quat<T> QuatTwist(const Quat<T>& q, const Vec3<T>& axis) {
+  const Vec3<T> twist_axis = axis * q.vec().dot(axis);
+  const Quat<T> twist(q.w(), twist_axis.x(), twist_axis.y(), twist_axis.z());
+  const T length_squared = twist.squaredNorm();
+  if (length_squared == T(0)) return Quat<T>::Identity();
+  return Quat<T>(twist.coeffs() / std::sqrt(length_squared));
+}
+
+// q = swing·twist with twist about X (y = z = 0) and swing about an axis in the YZ
+// plane (x = 0) (spec 2.12, Jolt's GetSwingTwist). With s = √(w² + x²):
+//   twist = (x/s, 0, 0, w/s),   swing = (0, (wy − xz)/s, (wz + xy)/s, s)    [xyz, w]
+// (expanding swing·twist gives back q). s == 0 is a half turn about an axis in the
+// YZ plane: twist = identity, swing = q. swing.w = s >= 0 otherwise.
+template <class T>
+struct SwingTwist {
+  Quat<T> swing;
+  Quat<T> twist;
+};
+
+template <class T>
+SwingTwist<T> DecomposeSwingTwist(const Quat<T>& q) {
+  const T x = q.x(), y = q.y(), z = q.z(), w = q.w();
+  const T s = std::sqrt(w * w + x * x);
+  if (s == T(0)) return {q, Quat<T>::Identity()};
+  return {Quat<T>(s, T(0), (w * y - x * z) / s, (w * z + x * y) / s),
+          Quat<T>(w / s, x / s, T(0), T(0))};
+}
+
+// Axis-aligned ellipse (x/a)² + (y/b)² = 1, a, b > 0 (spec 2.12, cone swing limit).
+template <class T>
+bool EllipseIsInside(T a, T b, const Vec2<T>& point) {
+  return (point.x() / a) * (point.x() / a) + (point.y() / b) * (point.y() / b) <= T(1);
+}
+
+// Closest point on the ellipse to `point` (meant for points outside it).
+// The closest point c satisfies point − c = t·(c.x/a², c.y/b²) for some t >= 0 (the
+// difference is along the normal), so c = (a²·px/(t + a²), b²·py/(t + b²)), and c on
+// the ellipse means
+//   g(t) = (a·px/(t + a²))² + (b·py/(t + b²))² − 1 = 0,
+//   g'(t) = −2·(a²px²/(t + a²)³ + b²py²/(t + b²)³).
+// Newton from t = 0 (g is decreasing and convex there, so it converges monotonically
+// from an outside point). Jolt loops in float without a cap until |g| < 1e-6; the
+// reference iterates IN DOUBLE whatever T is, with the same stop rule |g| < 1e-6 and
+// a generous cap of 100 iterations (never reached in practice; asserted). The number
+// of Newton steps taken goes to *iterations if given.
+template <class T>
+Vec2<T> EllipseClosestPoint(T a, T b, const Vec2<T>& point, int* iterations = nullptr) {
+  assert(a > T(0) && b > T(0));
+  const double ad = double(a), bd = double(b);
+  const double px = double(point.x()), py = double(point.y());
+  const double a_sq = ad * ad, b_sq = bd * bd;
+  double t = 0.0;
+  int steps = 0;
+  for (;; ++steps) {
+    const double t_plus_a_sq = t + a_sq;
+    const double t_plus_b_sq = t + b_sq;
+    const double gx = ad * px / t_plus_a_sq;
+    const double gy = bd * py / t_plus_b_sq;
+    const double g = gx * gx + gy * gy - 1.0;
+    if (std::abs(g) < 1e-6 || steps == 100) {
+      assert(std::abs(g) < 1e-6 && "ellipse closest point did not converge in 100 steps");
+      if (iterations != nullptr) *iterations = steps;
+      return Vec2<T>(T(a_sq * px / t_plus_a_sq), T(b_sq * py / t_plus_b_sq));
+    }
+    const double dg = -2.0 * (a_sq * px * px / (t_plus_a_sq * t_plus_a_sq * t_plus_a_sq) +
+                              b_sq * py * py / (t_plus_b_sq * t_plus_b_sq * t_plus_b_sq));
+    t -= g / dg;
+  }
+}
+
+// ---------------------------------------------------------------------------
+
 }  // namespace manyworlds::reference
