@@ -207,27 +207,14 @@ inline bool DualAxisSolvePosition(const BodyPair& bodies,
   return applied;
 }
 
-// Deactivate lanes whose flag is set: zero K^-1 and the accumulated impulse.
+// Jolt's Deactivate of the flagged lanes: K^-1 = 0 and accumulated impulse = 0.
 inline void DualAxisDeactivate(DualAxisLanes& part, const LaneFlags& lanes) {
-  ForEachChunk([&](std::size_t offset) {
-    const LaneMask off = LoadFlags(lanes, offset);
-    ClearWhere(off, part.effective_mass.xx, offset);
-    ClearWhere(off, part.effective_mass.xy, offset);
-    ClearWhere(off, part.effective_mass.yy, offset);
-    ClearWhere(off, part.persistent.total_lambda.x, offset);
-    ClearWhere(off, part.persistent.total_lambda.y, offset);
-  });
+  DeactivateFlaggedLanes(part, lanes);
 }
 
 // flag = 1 where K^-1 != 0 (Jolt's IsActive), else 0.
 inline void DualAxisIsActive(const DualAxisLanes& part, LaneFlags& active) {
-  ForEachChunk([&](std::size_t offset) {
-    const LaneMask nonzero =
-        hn::Or(hn::Or(hn::Ne(Load(part.effective_mass.xx, offset), Zero()),
-                      hn::Ne(Load(part.effective_mass.xy, offset), Zero())),
-               hn::Ne(Load(part.effective_mass.yy, offset), Zero()));
-    StoreFlags(nonzero, active, offset);
-  });
+  StoreActiveLanes(part, active);
 }
 
 }  // namespace HWY_NAMESPACE

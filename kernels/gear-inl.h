@@ -136,18 +136,14 @@ inline bool GearSolvePosition(const BodyPair& bodies, const LaneArray& error,
   return applied;
 }
 
+// Jolt's Deactivate of the flagged lanes: K^-1 = 0 and accumulated impulse = 0.
 inline void GearDeactivate(GearLanes& part, const LaneFlags& lanes) {
-  ForEachChunk([&](std::size_t offset) {
-    const LaneMask off = LoadFlags(lanes, offset);
-    ClearWhere(off, part.effective_mass, offset);
-    ClearWhere(off, part.persistent.total_lambda, offset);
-  });
+  DeactivateFlaggedLanes(part, lanes);
 }
 
+// flag = 1 where K^-1 != 0 (Jolt's IsActive), else 0.
 inline void GearIsActive(const GearLanes& part, LaneFlags& active) {
-  ForEachChunk([&](std::size_t offset) {
-    StoreFlags(hn::Ne(Load(part.effective_mass, offset), Zero()), active, offset);
-  });
+  StoreActiveLanes(part, active);
 }
 
 }  // namespace HWY_NAMESPACE

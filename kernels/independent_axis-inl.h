@@ -177,20 +177,14 @@ inline bool IndependentAxisSolvePosition(const BodyPair& bodies,
   return applied;
 }
 
-inline void IndependentAxisDeactivate(IndependentAxisLanes& part,
-                                      const LaneFlags& lanes) {
-  ForEachChunk([&](std::size_t offset) {
-    const LaneMask off = LoadFlags(lanes, offset);
-    ClearWhere(off, part.effective_mass, offset);
-    ClearWhere(off, part.persistent.total_lambda, offset);
-  });
+// Jolt's Deactivate of the flagged lanes: K^-1 = 0 and accumulated impulse = 0.
+inline void IndependentAxisDeactivate(IndependentAxisLanes& part, const LaneFlags& lanes) {
+  DeactivateFlaggedLanes(part, lanes);
 }
 
-inline void IndependentAxisIsActive(const IndependentAxisLanes& part,
-                                    LaneFlags& active) {
-  ForEachChunk([&](std::size_t offset) {
-    StoreFlags(hn::Ne(Load(part.effective_mass, offset), Zero()), active, offset);
-  });
+// flag = 1 where K^-1 != 0 (Jolt's IsActive), else 0.
+inline void IndependentAxisIsActive(const IndependentAxisLanes& part, LaneFlags& active) {
+  StoreActiveLanes(part, active);
 }
 
 }  // namespace HWY_NAMESPACE

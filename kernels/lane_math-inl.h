@@ -679,6 +679,51 @@ HWY_INLINE Quat QuatFromRotationMatrix(const Mat33& m) {
 }
 // --------------- 3x3 storage, quaternion from matrix (end)
 
+
+// ----------------------------------------------------- Deactivate / IsActive
+// Jolt's Deactivate and IsActive (spec 1.3) for every part that stores its
+// effective mass as `effective_mass` (LaneArray, Sym22Lanes or Sym33Lanes) and
+// its accumulated impulse as `persistent.total_lambda`.
+
+HWY_INLINE void ClearWhere(LaneMask mask, Vec2Lanes& v, std::size_t offset) {
+  ClearWhere(mask, v.x, offset);
+  ClearWhere(mask, v.y, offset);
+}
+HWY_INLINE void ClearWhere(LaneMask mask, Sym22Lanes& s, std::size_t offset) {
+  ClearWhere(mask, s.xx, offset);
+  ClearWhere(mask, s.xy, offset);
+  ClearWhere(mask, s.yy, offset);
+}
+
+HWY_INLINE LaneMask NonZeroLanes(const LaneArray& field, std::size_t offset) {
+  return hn::Ne(Load(field, offset), Zero());
+}
+HWY_INLINE LaneMask NonZeroLanes(const Sym22Lanes& s, std::size_t offset) {
+  return hn::Or(hn::Or(NonZeroLanes(s.xx, offset), NonZeroLanes(s.xy, offset)),
+                NonZeroLanes(s.yy, offset));
+}
+HWY_INLINE LaneMask NonZeroLanes(const Sym33Lanes& s, std::size_t offset) {
+  return AnyComponentNonZero(LoadSym33(s, offset));
+}
+
+// Deactivate the flagged lanes: zero effective mass and accumulated impulse.
+template <class PartLanes>
+HWY_INLINE void DeactivateFlaggedLanes(PartLanes& part, const LaneFlags& lanes) {
+  ForEachChunk([&](std::size_t offset) {
+    const LaneMask off = LoadFlags(lanes, offset);
+    ClearWhere(off, part.effective_mass, offset);
+    ClearWhere(off, part.persistent.total_lambda, offset);
+  });
+}
+
+// flag = 1 where the effective mass is not zero (active), else 0.
+template <class PartLanes>
+HWY_INLINE void StoreActiveLanes(const PartLanes& part, LaneFlags& active) {
+  ForEachChunk([&](std::size_t offset) {
+    StoreFlags(NonZeroLanes(part.effective_mass, offset), active, offset);
+  });
+}
+
 }  // namespace HWY_NAMESPACE
 }  // namespace manyworlds
 HWY_AFTER_NAMESPACE();

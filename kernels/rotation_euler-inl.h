@@ -230,21 +230,14 @@ inline bool RotationEulerSolvePosition(const BodyPair& bodies,
   return applied;
 }
 
-// Deactivate lanes whose flag is set: zero K^-1 and the accumulated impulse.
+// Jolt's Deactivate of the flagged lanes: K^-1 = 0 and accumulated impulse = 0.
 inline void RotationEulerDeactivate(RotationEulerLanes& part, const LaneFlags& lanes) {
-  ForEachChunk([&](std::size_t offset) {
-    const LaneMask off = LoadFlags(lanes, offset);
-    ClearWhere(off, part.effective_mass, offset);
-    ClearWhere(off, part.persistent.total_lambda, offset);
-  });
+  DeactivateFlaggedLanes(part, lanes);
 }
 
 // flag = 1 where K^-1 != 0 (Jolt's IsActive), else 0.
 inline void RotationEulerIsActive(const RotationEulerLanes& part, LaneFlags& active) {
-  ForEachChunk([&](std::size_t offset) {
-    StoreFlags(AnyComponentNonZero(LoadSym33(part.effective_mass, offset)), active,
-               offset);
-  });
+  StoreActiveLanes(part, active);
 }
 
 // ---------------------------------------------- rest rotation r0^-1 (spec 2.6)

@@ -202,17 +202,14 @@ inline void RotationQuatDeactivate(RotationQuatLanes& part, const LaneFlags& lan
   ForEachChunk([&](std::size_t offset) {
     const LaneMask off = LoadFlags(lanes, offset);
     ClearWhere(off, part.effective_mass, offset);
-    ClearWhere(off, part.effective_mass_jp, offset);
+    ClearWhere(off, part.effective_mass_jp, offset);  // else K^-1 JP still applies
     ClearWhere(off, part.persistent.total_lambda, offset);
   });
 }
 
 // flag = 1 where K^-1 != 0 (Jolt's IsActive), else 0.
 inline void RotationQuatIsActive(const RotationQuatLanes& part, LaneFlags& active) {
-  ForEachChunk([&](std::size_t offset) {
-    StoreFlags(AnyComponentNonZero(LoadSym33(part.effective_mass, offset)), active,
-               offset);
-  });
+  StoreActiveLanes(part, active);
 }
 
 }  // namespace HWY_NAMESPACE
