@@ -154,20 +154,6 @@ bool SolvePosition(AngleBatch& b, std::size_t iteration) {
   return applied;
 }
 
-bool Deactivate(AngleBatch& b, std::size_t) {
-  for (std::size_t i = 0; i < b.pairs.size(); ++i) {
-    b.kernels.deactivate(b.part[i], b.deactivate_lanes[i]);
-  }
-  return false;
-}
-
-bool IsActive(AngleBatch& b, std::size_t) {
-  for (std::size_t i = 0; i < b.pairs.size(); ++i) {
-    b.kernels.is_active(b.part[i], b.active[i]);
-  }
-  return false;
-}
-
 const bool kRegistered = RegisterPartBenchmarks<AngleBatch, AngleKernels>(
     "angle",
     {{"calculate_properties", &CalculateProperties},
@@ -178,8 +164,8 @@ const bool kRegistered = RegisterPartBenchmarks<AngleBatch, AngleKernels>(
      {"warm_start", &WarmStart},
      {"solve_velocity", &SolveVelocity},
      {"solve_position", &SolvePosition},
-     {"deactivate", &Deactivate},
-     {"is_active", &IsActive}});
+     {"deactivate", &DeactivateVerb<AngleBatch>},
+     {"is_active", &IsActiveVerb<AngleBatch>}});
 
 }  // namespace
 }  // namespace manyworlds::bench

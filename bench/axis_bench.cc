@@ -156,20 +156,6 @@ bool SolvePosition(AxisBatch& b, std::size_t iteration) {
   return applied;
 }
 
-bool Deactivate(AxisBatch& b, std::size_t) {
-  for (std::size_t i = 0; i < b.pairs.size(); ++i) {
-    b.kernels.deactivate(b.part[i], b.deactivate_lanes[i]);
-  }
-  return false;
-}
-
-bool IsActive(AxisBatch& b, std::size_t) {
-  for (std::size_t i = 0; i < b.pairs.size(); ++i) {
-    b.kernels.is_active(b.part[i], b.active[i]);
-  }
-  return false;
-}
-
 const bool kRegistered = RegisterPartBenchmarks<AxisBatch, AxisKernels>(
     "axis",
     {{"calculate_properties", &CalculateProperties},
@@ -180,8 +166,8 @@ const bool kRegistered = RegisterPartBenchmarks<AxisBatch, AxisKernels>(
      {"warm_start", &WarmStart},
      {"solve_velocity", &SolveVelocity},
      {"solve_position", &SolvePosition},
-     {"deactivate", &Deactivate},
-     {"is_active", &IsActive}});
+     {"deactivate", &DeactivateVerb<AxisBatch>},
+     {"is_active", &IsActiveVerb<AxisBatch>}});
 
 }  // namespace
 }  // namespace manyworlds::bench

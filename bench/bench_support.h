@@ -128,4 +128,22 @@ inline std::string InsaneBodies(const BodyBlocks& bodies) {
   return "";
 }
 
+// The deactivate and is_active verbs of every part batch that holds, per
+// block, `part` (the part's lanes), `deactivate_lanes` and `active` flags.
+template <class Batch>
+bool DeactivateVerb(Batch& b, std::size_t) {
+  for (std::size_t i = 0; i < b.part.block_count(); ++i) {
+    b.kernels.deactivate(b.part[i], b.deactivate_lanes[i]);
+  }
+  return false;
+}
+
+template <class Batch>
+bool IsActiveVerb(Batch& b, std::size_t) {
+  for (std::size_t i = 0; i < b.part.block_count(); ++i) {
+    b.kernels.is_active(b.part[i], b.active[i]);
+  }
+  return false;
+}
+
 }  // namespace manyworlds::bench

@@ -115,27 +115,13 @@ bool SolvePosition(DualAxisBatch& b, std::size_t iteration) {
   return applied;
 }
 
-bool Deactivate(DualAxisBatch& b, std::size_t) {
-  for (std::size_t i = 0; i < b.pairs.size(); ++i) {
-    b.kernels.deactivate(b.part[i], b.deactivate_lanes[i]);
-  }
-  return false;
-}
-
-bool IsActive(DualAxisBatch& b, std::size_t) {
-  for (std::size_t i = 0; i < b.pairs.size(); ++i) {
-    b.kernels.is_active(b.part[i], b.active[i]);
-  }
-  return false;
-}
-
 const bool kRegistered = RegisterPartBenchmarks<DualAxisBatch, DualAxisKernels>(
     "dual_axis", {{"calculate_properties", &CalculateProperties},
                   {"warm_start", &WarmStart},
                   {"solve_velocity", &SolveVelocity},
                   {"solve_position", &SolvePosition},
-                  {"deactivate", &Deactivate},
-                  {"is_active", &IsActive}});
+                  {"deactivate", &DeactivateVerb<DualAxisBatch>},
+                  {"is_active", &IsActiveVerb<DualAxisBatch>}});
 
 }  // namespace
 }  // namespace manyworlds::bench

@@ -108,27 +108,13 @@ bool SolvePosition(GearBatch& b, std::size_t iteration) {
   return applied;
 }
 
-bool Deactivate(GearBatch& b, std::size_t) {
-  for (std::size_t i = 0; i < b.pairs.size(); ++i) {
-    b.kernels.deactivate(b.part[i], b.deactivate_lanes[i]);
-  }
-  return false;
-}
-
-bool IsActive(GearBatch& b, std::size_t) {
-  for (std::size_t i = 0; i < b.pairs.size(); ++i) {
-    b.kernels.is_active(b.part[i], b.active[i]);
-  }
-  return false;
-}
-
 const bool kRegistered = RegisterPartBenchmarks<GearBatch, GearKernels>(
     "gear", {{"calculate_properties", &CalculateProperties},
              {"warm_start", &WarmStart},
              {"solve_velocity", &SolveVelocity},
              {"solve_position", &SolvePosition},
-             {"deactivate", &Deactivate},
-             {"is_active", &IsActive}});
+             {"deactivate", &DeactivateVerb<GearBatch>},
+             {"is_active", &IsActiveVerb<GearBatch>}});
 
 }  // namespace
 }  // namespace manyworlds::bench

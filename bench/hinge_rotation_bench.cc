@@ -119,27 +119,13 @@ bool SolvePosition(HingeRotationBatch& b, std::size_t) {
   return applied;
 }
 
-bool Deactivate(HingeRotationBatch& b, std::size_t) {
-  for (std::size_t i = 0; i < b.pairs.size(); ++i) {
-    b.kernels.deactivate(b.part[i], b.deactivate_lanes[i]);
-  }
-  return false;
-}
-
-bool IsActive(HingeRotationBatch& b, std::size_t) {
-  for (std::size_t i = 0; i < b.pairs.size(); ++i) {
-    b.kernels.is_active(b.part[i], b.active[i]);
-  }
-  return false;
-}
-
 const bool kRegistered = RegisterPartBenchmarks<HingeRotationBatch, HingeRotationKernels>(
     "hinge_rotation", {{"calculate_properties", &CalculateProperties},
                        {"warm_start", &WarmStart},
                        {"solve_velocity", &SolveVelocity},
                        {"solve_position", &SolvePosition},
-                       {"deactivate", &Deactivate},
-                       {"is_active", &IsActive}});
+                       {"deactivate", &DeactivateVerb<HingeRotationBatch>},
+                       {"is_active", &IsActiveVerb<HingeRotationBatch>}});
 
 }  // namespace
 }  // namespace manyworlds::bench

@@ -139,14 +139,14 @@ void PrintTable(const RecordingReporter& reporter, const TargetInfo& simd,
   const std::string simd_column = std::string("ns/world ") + simd.name;
   const std::string base_column = "ns/world " + base;
   const std::string ratio_column = base + "/" + simd.name + " (SIMD speed-up)";
-  std::printf("%-17s %-21s %16s %16s  %s\n", "part", "verb", simd_column.c_str(),
+  std::printf("%-20s %-21s %16s %16s  %s\n", "part", "verb", simd_column.c_str(),
               base_column.c_str(), ratio_column.c_str());
   for (const VerbBenchmark& verb : Registry()) {
     const double simd_ns = reporter.NsPerIteration(BenchmarkName(verb, simd)) / double(worlds);
     const double base_ns =
         scalar ? reporter.NsPerIteration(BenchmarkName(verb, *scalar)) / double(worlds) : NAN;
     if (std::isnan(simd_ns) && std::isnan(base_ns)) continue;  // filtered out
-    std::printf("%-17s %-21s %16s %16s  %s\n", verb.part.c_str(), verb.verb.c_str(),
+    std::printf("%-20s %-21s %16s %16s  %s\n", verb.part.c_str(), verb.verb.c_str(),
                 Figure(simd_ns, "%.3f").c_str(), Figure(base_ns, "%.3f").c_str(),
                 Figure(base_ns / simd_ns, "%.2fx").c_str());
   }

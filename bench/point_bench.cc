@@ -119,27 +119,13 @@ bool SolvePosition(PointBatch& b, std::size_t) {
   return applied;
 }
 
-bool Deactivate(PointBatch& b, std::size_t) {
-  for (std::size_t i = 0; i < b.pairs.size(); ++i) {
-    b.kernels.deactivate(b.part[i], b.deactivate_lanes[i]);
-  }
-  return false;
-}
-
-bool IsActive(PointBatch& b, std::size_t) {
-  for (std::size_t i = 0; i < b.pairs.size(); ++i) {
-    b.kernels.is_active(b.part[i], b.active[i]);
-  }
-  return false;
-}
-
 const bool kRegistered = RegisterPartBenchmarks<PointBatch, PointKernels>(
     "point", {{"calculate_properties", &CalculateProperties},
               {"warm_start", &WarmStart},
               {"solve_velocity", &SolveVelocity},
               {"solve_position", &SolvePosition},
-              {"deactivate", &Deactivate},
-              {"is_active", &IsActive}});
+              {"deactivate", &DeactivateVerb<PointBatch>},
+              {"is_active", &IsActiveVerb<PointBatch>}});
 
 }  // namespace
 }  // namespace manyworlds::bench

@@ -109,27 +109,13 @@ bool SolvePosition(RackAndPinionBatch& b, std::size_t iteration) {
   return applied;
 }
 
-bool Deactivate(RackAndPinionBatch& b, std::size_t) {
-  for (std::size_t i = 0; i < b.pairs.size(); ++i) {
-    b.kernels.deactivate(b.part[i], b.deactivate_lanes[i]);
-  }
-  return false;
-}
-
-bool IsActive(RackAndPinionBatch& b, std::size_t) {
-  for (std::size_t i = 0; i < b.pairs.size(); ++i) {
-    b.kernels.is_active(b.part[i], b.active[i]);
-  }
-  return false;
-}
-
 const bool kRegistered = RegisterPartBenchmarks<RackAndPinionBatch, RackAndPinionKernels>(
     "rack_and_pinion", {{"calculate_properties", &CalculateProperties},
                   {"warm_start", &WarmStart},
                   {"solve_velocity", &SolveVelocity},
                   {"solve_position", &SolvePosition},
-                  {"deactivate", &Deactivate},
-                  {"is_active", &IsActive}});
+                  {"deactivate", &DeactivateVerb<RackAndPinionBatch>},
+                  {"is_active", &IsActiveVerb<RackAndPinionBatch>}});
 
 }  // namespace
 }  // namespace manyworlds::bench

@@ -128,20 +128,6 @@ bool SolvePosition(RotationEulerBatch& b, std::size_t) {
   return applied;
 }
 
-bool Deactivate(RotationEulerBatch& b, std::size_t) {
-  for (std::size_t i = 0; i < b.pairs.size(); ++i) {
-    b.kernels.deactivate(b.part[i], b.deactivate_lanes[i]);
-  }
-  return false;
-}
-
-bool IsActive(RotationEulerBatch& b, std::size_t) {
-  for (std::size_t i = 0; i < b.pairs.size(); ++i) {
-    b.kernels.is_active(b.part[i], b.active[i]);
-  }
-  return false;
-}
-
 bool RestRotationFromBodies(RotationEulerBatch& b, std::size_t) {
   for (std::size_t i = 0; i < b.pairs.size(); ++i) {
     b.kernels.inverse_initial_orientation_from_bodies(b.pairs[i], b.helper_output[i]);
@@ -181,8 +167,8 @@ const bool kRegistered = RegisterPartBenchmarks<RotationEulerBatch, RotationEule
      {"warm_start", &WarmStart},
      {"solve_velocity", &SolveVelocity},
      {"solve_position", &SolvePosition},
-     {"deactivate", &Deactivate},
-     {"is_active", &IsActive},
+     {"deactivate", &DeactivateVerb<RotationEulerBatch>},
+     {"is_active", &IsActiveVerb<RotationEulerBatch>},
      {"rest_rotation_from_bodies", &RestRotationFromBodies},
      {"rest_rotation_from_frames_xy", &RestRotationFromFramesXY},
      {"rest_rotation_from_frames_xz", &RestRotationFromFramesXZ},

@@ -112,27 +112,13 @@ bool SolvePosition(RotationQuatBatch& b, std::size_t) {
   return applied;
 }
 
-bool Deactivate(RotationQuatBatch& b, std::size_t) {
-  for (std::size_t i = 0; i < b.pairs.size(); ++i) {
-    b.kernels.deactivate(b.part[i], b.deactivate_lanes[i]);
-  }
-  return false;
-}
-
-bool IsActive(RotationQuatBatch& b, std::size_t) {
-  for (std::size_t i = 0; i < b.pairs.size(); ++i) {
-    b.kernels.is_active(b.part[i], b.active[i]);
-  }
-  return false;
-}
-
 const bool kRegistered = RegisterPartBenchmarks<RotationQuatBatch, RotationQuatKernels>(
     "rotation_quat", {{"calculate_properties", &CalculateProperties},
                       {"warm_start", &WarmStart},
                       {"solve_velocity", &SolveVelocity},
                       {"solve_position", &SolvePosition},
-                      {"deactivate", &Deactivate},
-                      {"is_active", &IsActive}});
+                      {"deactivate", &DeactivateVerb<RotationQuatBatch>},
+                      {"is_active", &IsActiveVerb<RotationQuatBatch>}});
 
 }  // namespace
 }  // namespace manyworlds::bench

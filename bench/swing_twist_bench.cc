@@ -155,16 +155,6 @@ struct Verbs {
     }
     return applied;
   }
-  static bool Deactivate(Batch& b, std::size_t) {
-    for (std::size_t i = 0; i < b.pairs.size(); ++i) {
-      b.kernels.deactivate(b.part[i], b.deactivate_lanes[i]);
-    }
-    return false;
-  }
-  static bool IsActive(Batch& b, std::size_t) {
-    for (std::size_t i = 0; i < b.pairs.size(); ++i) b.kernels.is_active(b.part[i], b.active[i]);
-    return false;
-  }
 
   static bool Register(const char* part) {
     return RegisterPartBenchmarks<Batch, SwingTwistKernels>(
@@ -172,8 +162,8 @@ struct Verbs {
                {"warm_start", &WarmStart},
                {"solve_velocity", &SolveVelocity},
                {"solve_position", &SolvePosition},
-               {"deactivate", &Deactivate},
-               {"is_active", &IsActive}});
+               {"deactivate", &DeactivateVerb<Batch>},
+               {"is_active", &IsActiveVerb<Batch>}});
   }
 };
 
