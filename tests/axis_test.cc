@@ -170,30 +170,18 @@ class AxisTest : public PartTestBase<AxisKernels> {
   }
 
   void DeactivateFlaggedLanes() {
-    PartBlocks<LaneFlags> flags(blocks());
-    for (std::size_t w = 0; w < worlds(); ++w) {
-      if (KindOfRowWorld(w) == RowKind::kDeactivatedByFlag) {
-        flags[Block(w)][Lane(w)] = 1.0f;
-        reference_[w].Deactivate();
-      }
-    }
-    for (std::size_t block = 0; block < blocks(); ++block) {
-      kernels_->deactivate((*parts_)[block], flags[block]);
-    }
+    DeactivateWorlds(*parts_, reference_,
+                     [](std::size_t w) { return KindOfRowWorld(w) == RowKind::kDeactivatedByFlag; });
   }
 
   // K is a scalar, so 1/K is as accurate as K; what amplifies rounding is
   // the cancellation in the velocity solve's -J v - (softness L + b), whose
   // condition number SolveVelocity() sets per world (1 for the other verbs).
   PartHooks Hooks() {
-    return {[this](std::size_t w) { return Eigen::VectorXd::Constant(1, Lambda(w)); },
-            [this](std::size_t w) {
-              return Eigen::VectorXd::Constant(1, reference_[w].GetTotalLambda());
-            },
-            [this](std::size_t w) { reference_[w].SetTotalLambda(Lambda(w)); },
-            [this](std::size_t w) {
-              return velocity_condition_.empty() ? 1.0 : velocity_condition_[w];
-            }};
+    return MakePartHooks(reference_, [this](std::size_t w) { return Lambda(w); },
+                         [this](std::size_t w) {
+                           return velocity_condition_.empty() ? 1.0 : velocity_condition_[w];
+                         });
   }
 
   void WarmStart(float ratio) {

@@ -105,25 +105,13 @@ class GearTest : public PartTestBase<GearKernels> {
   }
 
   void DeactivateFlaggedLanes() {
-    PartBlocks<LaneFlags> flags(blocks());
-    for (std::size_t w = 0; w < worlds(); ++w) {
-      if (KindOfWorld(w) == LaneKind::kDeactivatedByFlag) {
-        flags[Block(w)][Lane(w)] = 1.0f;
-        reference_[w].Deactivate();
-      }
-    }
-    for (std::size_t block = 0; block < blocks(); ++block) {
-      kernels_->deactivate((*parts_)[block], flags[block]);
-    }
+    DeactivateWorlds(*parts_, reference_,
+                     [](std::size_t w) { return KindOfWorld(w) == LaneKind::kDeactivatedByFlag; });
   }
 
-  PartHooks Hooks() {
-    return {[this](std::size_t w) { return Eigen::VectorXd::Constant(1, Lambda(w)); },
-            [this](std::size_t w) {
-              return Eigen::VectorXd::Constant(1, reference_[w].GetTotalLambda());
-            },
-            [this](std::size_t w) { reference_[w].SetTotalLambda(Lambda(w)); },
-            [](std::size_t) { return 1.0; }};  // K is a scalar: no amplification
+  PartHooks Hooks() {  // K is a scalar: no amplification
+    return MakePartHooks(reference_, [this](std::size_t w) { return Lambda(w); },
+                         [](std::size_t) { return 1.0; });
   }
 
   template <class KernelVerb, class ReferenceVerb>

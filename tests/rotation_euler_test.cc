@@ -154,23 +154,13 @@ class RotationEulerTest : public PartTestBase<RotationEulerKernels> {
   }
 
   void DeactivateFlaggedLanes() {
-    PartBlocks<LaneFlags> flags(blocks());
-    for (std::size_t w = 0; w < worlds(); ++w) {
-      if (KindOfWorld(w) == LaneKind::kDeactivatedByFlag) {
-        flags[Block(w)][Lane(w)] = 1.0f;
-        reference_[w].Deactivate();
-      }
-    }
-    for (std::size_t block = 0; block < blocks(); ++block) {
-      kernels_->deactivate((*parts_)[block], flags[block]);
-    }
+    DeactivateWorlds(*parts_, reference_,
+                     [](std::size_t w) { return KindOfWorld(w) == LaneKind::kDeactivatedByFlag; });
   }
 
   PartHooks Hooks() {
-    return {[this](std::size_t w) -> Eigen::VectorXd { return Lambda(w); },
-            [this](std::size_t w) -> Eigen::VectorXd { return reference_[w].GetTotalLambda(); },
-            [this](std::size_t w) { reference_[w].SetTotalLambda(Lambda(w)); },
-            [this](std::size_t w) { return ConditionOf(w); }};
+    return MakePartHooks(reference_, [this](std::size_t w) { return Lambda(w); },
+                         [this](std::size_t w) { return ConditionOf(w); });
   }
 
   void WarmStart(float ratio) {

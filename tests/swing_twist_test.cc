@@ -176,16 +176,8 @@ class SwingTwistTest : public PartTestBase<SwingTwistKernels> {
   }
 
   void DeactivateFlaggedLanes() {
-    PartBlocks<LaneFlags> flags(blocks());
-    for (std::size_t w = 0; w < worlds(); ++w) {
-      if (KindOfWorld(w) == LaneKind::kDeactivatedByFlag) {
-        flags[Block(w)][Lane(w)] = 1.0f;
-        reference_[w].Deactivate();
-      }
-    }
-    for (std::size_t block = 0; block < blocks(); ++block) {
-      kernels_->deactivate((*parts_)[block], flags[block]);
-    }
+    DeactivateWorlds(*parts_, reference_,
+                     [](std::size_t w) { return KindOfWorld(w) == LaneKind::kDeactivatedByFlag; });
   }
 
   PartHooks Hooks(bool position) {

@@ -232,6 +232,27 @@ struct PartHooks {
   std::function<double(std::size_t world)> condition;
 };
 
+// A part's impulse as the vector CompareVerbOnEveryLane compares.
+inline Eigen::VectorXd AsVector(double value) { return Eigen::VectorXd::Constant(1, value); }
+template <int N>
+Eigen::VectorXd AsVector(const Eigen::Matrix<double, N, 1>& value) {
+  return value;
+}
+
+// The hooks of a part whose reference parts have Get/SetTotalLambda:
+// kernel_lambda(world) reads the kernel's impulse (a double or an Eigen
+// vector), condition(world) is the lane's cond(K).
+template <class Reference, class KernelLambda, class ConditionOf>
+PartHooks MakePartHooks(std::vector<Reference>& reference, KernelLambda kernel_lambda,
+                        ConditionOf condition) {
+  return {[kernel_lambda](std::size_t w) { return AsVector(kernel_lambda(w)); },
+          [&reference](std::size_t w) { return AsVector(reference[w].GetTotalLambda()); },
+          [&reference, kernel_lambda](std::size_t w) {
+            reference[w].SetTotalLambda(kernel_lambda(w));
+          },
+          condition};
+}
+
 // Runs one verb on the kernel (per block) and on the reference (per world)
 // from the same body state and impulse, then compares every lane's bodies and
 // impulse, and the kernel's per-block "any lane applied" with the reference.
@@ -312,6 +333,22 @@ class PartTestBase : public ::testing::TestWithParam<PartCase<Table>> {
         EXPECT_TRUE(BitEqual(&a, &b, sizeof(BodyState)))
             << what << ": body " << body << " of world " << w << " changed";
       }
+    }
+  }
+
+  // Deactivates the worlds `selected(world)` picks, in the kernel (through
+  // per-lane flags) and in their reference parts.
+  template <class PartLanes, class Reference, class Selected>
+  void DeactivateWorlds(PartBlocks<PartLanes>& parts, std::vector<Reference>& reference,
+                        Selected selected) {
+    PartBlocks<LaneFlags> flags(blocks());
+    for (std::size_t w = 0; w < worlds(); ++w) {
+      if (!selected(w)) continue;
+      flags[Block(w)][Lane(w)] = 1.0f;
+      reference[w].Deactivate();
+    }
+    for (std::size_t block = 0; block < blocks(); ++block) {
+      kernels_->deactivate(parts[block], flags[block]);
     }
   }
 
