@@ -44,6 +44,10 @@ HWY_INLINE void ForEachChunk(ChunkFn&& chunk) {
   }
 }
 
+// Masks with every lane of a chunk set / none set (Highway 1.0.3 has no MaskFalse).
+HWY_INLINE hn::Mask<LaneTag> AllLanes() { return hn::FirstN(LaneTag(), kLaneWidth); }
+HWY_INLINE hn::Mask<LaneTag> NoLanes() { return hn::FirstN(LaneTag(), 0); }
+
 HWY_INLINE LaneVec Splat(float value) { return hn::Set(LaneTag(), value); }
 HWY_INLINE LaneVec Zero() { return hn::Zero(LaneTag()); }
 
@@ -159,6 +163,8 @@ HWY_INLINE Quat Select(LaneMask mask, const Quat& yes, const Quat& no) {
           hn::IfThenElse(mask, yes.z, no.z), hn::IfThenElse(mask, yes.w, no.w)};
 }
 
+HWY_INLINE Quat IdentityQuat() { return {Zero(), Zero(), Zero(), Splat(1.0f)}; }
+
 // Rotates v by the unit quaternion q: v + 2w(u x v) + 2u x (u x v), u = q.xyz.
 HWY_INLINE Vec3 Rotate(const Quat& q, const Vec3& v) {
   const Vec3 u{q.x, q.y, q.z};
@@ -239,6 +245,8 @@ HWY_INLINE Quat AddRotationStep(const Quat& q, const Vec3& theta) {
 struct Mat33 {
   LaneVec m[3][3];
 };
+
+HWY_INLINE Vec3 Column(const Mat33& m, int j) { return {m.m[0][j], m.m[1][j], m.m[2][j]}; }
 
 // Symmetric 3x3 (inverse inertia, effective mass): six distinct entries.
 struct Sym33 {
@@ -351,9 +359,9 @@ HWY_INLINE Sym22 InverseSym22(const Sym22& k, LaneMask& invertible) {
 // columns (precise cross products). det == 0 exactly => zero inverse, not
 // invertible (Jolt's SetInversed3x3 rule).
 HWY_INLINE Mat33 Inverse33(const Mat33& a, LaneMask& invertible) {
-  const Vec3 col_x{a.m[0][0], a.m[1][0], a.m[2][0]};
-  const Vec3 col_y{a.m[0][1], a.m[1][1], a.m[2][1]};
-  const Vec3 col_z{a.m[0][2], a.m[1][2], a.m[2][2]};
+  const Vec3 col_x = Column(a, 0);
+  const Vec3 col_y = Column(a, 1);
+  const Vec3 col_z = Column(a, 2);
   // Rows of the adjugate are the cross products of pairs of columns.
   const Vec3 row0 = Cross(col_y, col_z);
   const Vec3 row1 = Cross(col_z, col_x);

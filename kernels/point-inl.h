@@ -59,9 +59,9 @@ HWY_INLINE Mat33 InverseInertiaTimesCross(const Sym33& i, const Vec3& r) {
 // column j being (column j of A) x r; only the upper triangle is kept.
 HWY_INLINE void AddBodyToInverseEffectiveMass(LaneVec inv_mass, const Mat33& a,
                                               const Vec3& r, Sym33& k) {
-  const Vec3 column0 = Cross(Vec3{a.m[0][0], a.m[1][0], a.m[2][0]}, r);
-  const Vec3 column1 = Cross(Vec3{a.m[0][1], a.m[1][1], a.m[2][1]}, r);
-  const Vec3 column2 = Cross(Vec3{a.m[0][2], a.m[1][2], a.m[2][2]}, r);
+  const Vec3 column0 = Cross(Column(a, 0), r);
+  const Vec3 column1 = Cross(Column(a, 1), r);
+  const Vec3 column2 = Cross(Column(a, 2), r);
   k.xx = hn::Add(k.xx, hn::Add(inv_mass, column0.x));
   k.xy = hn::Add(k.xy, column1.x);
   k.xz = hn::Add(k.xz, column2.x);

@@ -119,8 +119,7 @@ HWY_INLINE Quat InverseInitialOrientationFromFrames(const Vec3& first1,
   const LaneMask same = hn::And(
       hn::Not(AnyComponentNonZero(Sub(first1, first2))),
       hn::Not(AnyComponentNonZero(Sub(second1, second2))));
-  const Quat identity{Zero(), Zero(), Zero(), Splat(1.0f)};
-  return Select(same, identity, Mul(frame2, Conjugate(frame1)));
+  return Select(same, IdentityQuat(), Mul(frame2, Conjugate(frame1)));
 }
 
 }  // namespace rotation_euler
@@ -220,11 +219,10 @@ inline bool RotationEulerSolvePosition(const BodyPair& bodies,
                                        const QuatLanes& inv_initial_orientation,
                                        const RotationEulerLanes& part, float baumgarte) {
   bool applied = false;
-  const LaneMask every_lane = hn::FirstN(LaneTag(), kLaneWidth);
   ForEachChunk([&](std::size_t offset) {
     const LaneMask solved = RotationEulerPositionStepOfChunk(
         bodies, rotation_euler::LoadChunk(part, offset),
-        LoadQuat(inv_initial_orientation, offset), baumgarte, every_lane, offset);
+        LoadQuat(inv_initial_orientation, offset), baumgarte, AllLanes(), offset);
     applied |= AnyLane(solved);
   });
   return applied;

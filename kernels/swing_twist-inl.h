@@ -69,8 +69,6 @@ HWY_INLINE RowsInUse RowsInUseOf(const SwingTwistConfig& config) {
   return {!both_free, y_locked || z_locked, config.twist != AxisLimitKind::kFree};
 }
 
-HWY_INLINE LaneMask AllLanes() { return hn::FirstN(LaneTag(), kLaneWidth); }
-
 // q1 c1 (constraint space to world) and q = (q1 c1)* (q2 c2), from the
 // bodies' current rotations.
 HWY_INLINE void ConstraintRotation(const BodyPair& bodies, const SwingTwistGeometry& geometry,
@@ -82,8 +80,6 @@ HWY_INLINE void ConstraintRotation(const BodyPair& bodies, const SwingTwistGeome
                                LoadQuat(geometry.constraint_to_body2, offset));
   rotation = Mul(Conjugate(constraint_to_world), body2_frame);
 }
-
-HWY_INLINE Vec3 Column(const Mat33& m, int j) { return {m.m[0][j], m.m[1][j], m.m[2][j]}; }
 
 // X axis of the unit quaternion's frame: the first column of its matrix.
 HWY_INLINE Vec3 RotatedAxisX(const Quat& q) {
@@ -203,7 +199,7 @@ inline void SwingTwistCalculateProperties(const BodyPair& bodies, const SwingTwi
     const st::AxisLimit twist_limit = st::LoadAxisLimit(limits.twist, offset);
     // World axes of the constraint frame after the unclamped swing.
     const Mat33 frame = RotationMatrix(Mul(r.constraint_to_world, r.decomposed.swing));
-    const Vec3 frame_x = st::Column(frame, 0);
+    const Vec3 frame_x = Column(frame, 0);
 
     if (y_locked || z_locked) {
       st::CalculateOneDofSwingRows(bodies, config, frame, r.axes, y_limit, z_limit, part, offset);
@@ -216,7 +212,7 @@ inline void SwingTwistCalculateProperties(const BodyPair& bodies, const SwingTwi
 
     switch (config.twist) {
       case AxisLimitKind::kLocked:
-        st::CalculateRow(bodies, frame_x, st::AllLanes(), st::MaxLambda(twist_limit), part.twist,
+        st::CalculateRow(bodies, frame_x, AllLanes(), st::MaxLambda(twist_limit), part.twist,
                          part.persistent.twist_lambda, offset);
         break;
       case AxisLimitKind::kLimited:
@@ -263,7 +259,7 @@ inline bool SwingTwistSolveVelocity(const BodyPair& bodies, const SwingTwistConf
                                      Load(row.max_lambda, offset), row.properties, total_lambda,
                                      offset);
     };
-    LaneMask any = swing_twist::NoLanes();
+    LaneMask any = NoLanes();
     if (rows.swing_y) any = hn::Or(any, solve_row(part.swing_y, part.persistent.swing_y_lambda));
     if (rows.swing_z) any = hn::Or(any, solve_row(part.swing_z, part.persistent.swing_z_lambda));
     if (rows.twist) any = hn::Or(any, solve_row(part.twist, part.persistent.twist_lambda));

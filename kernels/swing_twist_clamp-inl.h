@@ -74,14 +74,11 @@ struct ClampedAxes {
   LaneMask swing_z_min, swing_z_max;
 };
 
-HWY_INLINE LaneMask NoLanes() { return hn::FirstN(LaneTag(), 0); }
-
 HWY_INLINE LaneMask AnyClamped(const ClampedAxes& c) {
   return hn::Or(hn::Or(hn::Or(c.twist_min, c.twist_max), hn::Or(c.swing_y_min, c.swing_y_max)),
                 hn::Or(c.swing_z_min, c.swing_z_max));
 }
 
-HWY_INLINE Quat IdentityQuat() { return {Zero(), Zero(), Zero(), Splat(1.0f)}; }
 HWY_INLINE Quat NegateQuat(const Quat& q) {
   return {hn::Neg(q.x), hn::Neg(q.y), hn::Neg(q.z), hn::Neg(q.w)};
 }
