@@ -69,9 +69,8 @@ inline void GearCalculateProperties(const BodyPair& bodies, const GearGeometry& 
     // r^2 b.I2^-1 b = (r b).(r I2^-1 b)
     const LaneVec k = hn::MulAdd(ratio, Dot(hinge_axis2, ratio_inv_i2_b),
                                  Dot(hinge_axis1, inv_i1_a));
-    const LaneMask active = hn::Ne(k, Zero());
-    const LaneVec effective_mass = hn::IfThenElseZero(
-        active, hn::Div(Splat(1.0f), hn::IfThenElse(active, k, Splat(1.0f))));
+    LaneMask active;
+    const LaneVec effective_mass = ReciprocalOrZero(k, active);
     StoreVec3(inv_i1_a, part.inv_i1_hinge_axis1, offset);
     StoreVec3(ratio_inv_i2_b, part.ratio_inv_i2_hinge_axis2, offset);
     Store(effective_mass, part.effective_mass, offset);

@@ -95,9 +95,8 @@ inline void IndependentAxisCalculateProperties(const BodyPair& bodies,
                      Dot(inv_i2_ratio_r2_x_n2, ratio_r2_x_n2));
       k = hn::Add(k, body2_term);
     }
-    const LaneMask active = hn::Ne(k, Zero());
-    const LaneVec effective_mass = hn::IfThenElseZero(
-        active, hn::Div(Splat(1.0f), hn::IfThenElse(active, k, Splat(1.0f))));
+    LaneMask active;
+    const LaneVec effective_mass = ReciprocalOrZero(k, active);
     StoreVec3(r1_x_n1, part.r1_x_n1, offset);
     StoreVec3(inv_i1_r1_x_n1, part.inv_i1_r1_x_n1, offset);
     StoreVec3(ratio_r2_x_n2, part.ratio_r2_x_n2, offset);

@@ -69,6 +69,14 @@ HWY_INLINE LaneVec DifferenceOfProducts(LaneVec a, LaneVec b, LaneVec c,
   return hn::Add(ab_minus_cd, cd_error);
 }
 
+// 1/x where x != 0, else 0, with `nonzero` telling which: Jolt's rule that an
+// exactly zero inverse effective mass (or determinant) means inactive.
+HWY_INLINE LaneVec ReciprocalOrZero(LaneVec x, hn::Mask<LaneTag>& nonzero) {
+  nonzero = hn::Ne(x, Zero());
+  return hn::IfThenElseZero(nonzero,
+                            hn::Div(Splat(1.0f), hn::IfThenElse(nonzero, x, Splat(1.0f))));
+}
+
 // ---------------------------------------------------------------- 3-vectors
 
 struct Vec3 {
@@ -367,9 +375,7 @@ HWY_INLINE Mat33 Inverse33(const Mat33& a, LaneMask& invertible) {
   const Vec3 row1 = Cross(col_z, col_x);
   const Vec3 row2 = Cross(col_x, col_y);
   const LaneVec det = Dot(col_x, row0);
-  invertible = hn::Ne(det, Zero());
-  const LaneVec inv_det = hn::IfThenElseZero(
-      invertible, hn::Div(Splat(1.0f), hn::IfThenElse(invertible, det, Splat(1.0f))));
+  const LaneVec inv_det = ReciprocalOrZero(det, invertible);
   Mat33 inverse;
   const Vec3 rows[3] = {Scale(row0, inv_det), Scale(row1, inv_det),
                         Scale(row2, inv_det)};

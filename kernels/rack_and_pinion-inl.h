@@ -67,9 +67,8 @@ inline void RackAndPinionCalculateProperties(
         Scale(LoadVec3(geometry.slider_axis, offset), hn::Mul(ratio, inv_m2));
     const LaneVec k =
         hn::MulAdd(hn::Mul(ratio, ratio), inv_m2, Dot(hinge_axis, inv_i1_a));
-    const LaneMask active = hn::Ne(k, Zero());
-    const LaneVec effective_mass = hn::IfThenElseZero(
-        active, hn::Div(Splat(1.0f), hn::IfThenElse(active, k, Splat(1.0f))));
+    LaneMask active;
+    const LaneVec effective_mass = ReciprocalOrZero(k, active);
     StoreVec3(inv_i1_a, part.inv_i1_hinge_axis, offset);
     StoreVec3(ratio_inv_m2_b, part.ratio_inv_m2_slider_axis, offset);
     Store(effective_mass, part.effective_mass, offset);
