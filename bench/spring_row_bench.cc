@@ -1,5 +1,5 @@
-// Angle part benchmarks: every SIMD verb over a batch of worlds with random
-// per-world inputs, both bodies dynamic. Lanes mix what a scene mixes: about
+// Axis and angle part benchmarks (the two spring rows): every SIMD verb over a
+// batch of worlds with random per-world inputs, both bodies dynamic. Lanes mix what a scene mixes: about
 // half soft (a spring limit), half hard; some rows clamped one-sided or to a
 // small range, the rest unclamped.
 #include <cfloat>
@@ -11,19 +11,56 @@
 #include "bench/bench_registry.h"
 #include "bench/bench_support.h"
 #include "kernels/angle.h"
+#include "kernels/axis.h"
 
 namespace manyworlds::bench {
 namespace {
 
 inline constexpr float kDeltaTime = 1.0f / 60.0f;
 
-class AngleBatch {
+// What differs between the axis and the angle row: types, names, the axis
+// row's lever arms and its warm start's use of the geometry.
+struct AxisRow {
+  using Kernels = AxisKernels;
+  using Geometry = AxisGeometry;
+  using Lanes = AxisLanes;
+  static constexpr const char* kPart = "axis";
+  static constexpr const char* kConstraint = "distance";
+  static constexpr PartKind kKind = PartKind::kAxis;
+  static void SetLeverArms(Geometry& g, std::size_t lane, Random& random) {
+    SetLane(g.r1_plus_u, lane, random.Vector(0.0f, 1.5f));
+    SetLane(g.r2, lane, random.Vector(0.0f, 1.0f));
+  }
+  static void WarmStart(const Kernels& k, const BodyPair& pair, const Geometry& g,
+                        Lanes& part, float ratio) {
+    k.warm_start(pair, g, part, ratio);
+  }
+};
+
+struct AngleRow {
+  using Kernels = AngleKernels;
+  using Geometry = AngleGeometry;
+  using Lanes = AngleLanes;
+  static constexpr const char* kPart = "angle";
+  static constexpr const char* kConstraint = "hinge_limit";
+  static constexpr PartKind kKind = PartKind::kAngle;
+  static void SetLeverArms(Geometry&, std::size_t, Random&) {}
+  static void WarmStart(const Kernels& k, const BodyPair& pair, const Geometry&, Lanes& part,
+                        float ratio) {
+    k.warm_start(pair, part, ratio);
+  }
+};
+
+template <class Row>
+class SpringRowBatch {
  public:
-  AngleBatch(const AngleKernels& kernels, std::size_t worlds)
+  using Geometry = typename Row::Geometry;
+
+  SpringRowBatch(const typename Row::Kernels& kernels, std::size_t worlds)
       : kernels(kernels),
         bodies({MotionType::kDynamic, MotionType::kDynamic}, worlds),
-        geometry{PartBlocks<AngleGeometry>(bodies.block_count()),
-                 PartBlocks<AngleGeometry>(bodies.block_count())},
+        geometry{PartBlocks<Geometry>(bodies.block_count()),
+                 PartBlocks<Geometry>(bodies.block_count())},
         part(bodies.block_count()),
         deactivate_lanes(bodies.block_count()),
         active(bodies.block_count()) {
@@ -32,12 +69,13 @@ class AngleBatch {
       bodies.Set(world, 0, RandomBody(random));
       bodies.Set(world, 1, RandomBody(random));
     }
-    const PartBinding hinge = BindPart(bodies, "hinge_limit", PartKind::kAngle, 0, 1);
+    const PartBinding binding = BindPart(bodies, Row::kConstraint, Row::kKind, 0, 1);
     for (std::size_t block = 0; block < bodies.block_count(); ++block) {
-      pairs.push_back(PairInBlock(bodies, hinge, block));
+      pairs.push_back(PairInBlock(bodies, binding, block));
       for (std::size_t lane = 0; lane < kLaneWidth; ++lane) {
-        AngleGeometry& g = geometry[0][block];
+        Geometry& g = geometry[0][block];
         SetLane(g.axis, lane, random.UnitVector());
+        Row::SetLeverArms(g, lane, random);
         g.error[lane] = random.Sign() * random.Uniform(0.01f, 0.1f);
         g.bias[lane] = random.Uniform(-0.5f, 0.5f);
         const float range = random.Uniform(0.0f, 1.0f);
@@ -58,19 +96,20 @@ class AngleBatch {
                                              kDeltaTime, SpringMode::kFrequencyAndDamping);
     }
   }
-  AngleBatch(const AngleBatch&) = delete;  // pairs point into `bodies`
-  AngleBatch& operator=(const AngleBatch&) = delete;
+  SpringRowBatch(const SpringRowBatch&) = delete;  // pairs point into `bodies`
+  SpringRowBatch& operator=(const SpringRowBatch&) = delete;
 
   std::string Insane() const {
     if (std::string problem = InsaneBodies(bodies); !problem.empty()) return problem;
     for (std::size_t block = 0; block < bodies.block_count(); ++block) {
       for (std::size_t lane = 0; lane < kLaneWidth; ++lane) {
-        const AngleLanes& p = part[block];
+        const typename Row::Lanes& p = part[block];
         for (const float value :
              {p.persistent.total_lambda[lane], p.properties.effective_mass[lane],
               p.properties.spring.softness[lane], p.properties.spring.bias[lane]}) {
           std::string problem = InsaneValue(
-              "angle impulse, effective mass or spring in block " + std::to_string(block),
+              std::string(Row::kPart) + " impulse, effective mass or spring in block " +
+                  std::to_string(block),
               value);
           if (!problem.empty()) return problem;
         }
@@ -79,23 +118,25 @@ class AngleBatch {
     return "";
   }
 
-  const AngleKernels& kernels;
+  const typename Row::Kernels& kernels;
   BodyBlocks bodies;
   std::vector<BodyPair> pairs;          // per block
-  PartBlocks<AngleGeometry> geometry[2];  // identical but for the sign of C
-  PartBlocks<AngleLanes> part;
+  PartBlocks<Geometry> geometry[2];  // identical but for the sign of C
+  PartBlocks<typename Row::Lanes> part;
   PartBlocks<LaneFlags> deactivate_lanes;
   PartBlocks<LaneFlags> active;
 };
 
-bool CalculateProperties(AngleBatch& b, std::size_t) {
+template <class Row>
+bool CalculateProperties(SpringRowBatch<Row>& b, std::size_t) {
   for (std::size_t i = 0; i < b.pairs.size(); ++i) {
     b.kernels.calculate_properties(b.pairs[i], b.geometry[0][i], b.part[i]);
   }
   return false;
 }
 
-bool CalculatePropertiesWithFrequencyAndDamping(AngleBatch& b, std::size_t) {
+template <class Row>
+bool CalculatePropertiesWithFrequencyAndDamping(SpringRowBatch<Row>& b, std::size_t) {
   for (std::size_t i = 0; i < b.pairs.size(); ++i) {
     b.kernels.calculate_properties_with_frequency_and_damping(b.pairs[i], b.geometry[0][i],
                                                               b.part[i], kDeltaTime);
@@ -103,7 +144,8 @@ bool CalculatePropertiesWithFrequencyAndDamping(AngleBatch& b, std::size_t) {
   return false;
 }
 
-bool CalculatePropertiesWithStiffnessAndDamping(AngleBatch& b, std::size_t) {
+template <class Row>
+bool CalculatePropertiesWithStiffnessAndDamping(SpringRowBatch<Row>& b, std::size_t) {
   for (std::size_t i = 0; i < b.pairs.size(); ++i) {
     b.kernels.calculate_properties_with_stiffness_and_damping(b.pairs[i], b.geometry[0][i],
                                                               b.part[i], kDeltaTime);
@@ -111,7 +153,8 @@ bool CalculatePropertiesWithStiffnessAndDamping(AngleBatch& b, std::size_t) {
   return false;
 }
 
-bool CalculatePropertiesForLimit(AngleBatch& b, std::size_t) {
+template <class Row>
+bool CalculatePropertiesForLimit(SpringRowBatch<Row>& b, std::size_t) {
   for (std::size_t i = 0; i < b.pairs.size(); ++i) {
     b.kernels.calculate_properties_for_limit(b.pairs[i], b.geometry[0][i], b.part[i],
                                              kDeltaTime, SpringMode::kFrequencyAndDamping);
@@ -119,7 +162,8 @@ bool CalculatePropertiesForLimit(AngleBatch& b, std::size_t) {
   return false;
 }
 
-bool CalculatePropertiesForMotor(AngleBatch& b, std::size_t) {
+template <class Row>
+bool CalculatePropertiesForMotor(SpringRowBatch<Row>& b, std::size_t) {
   for (std::size_t i = 0; i < b.pairs.size(); ++i) {
     b.kernels.calculate_properties_for_motor(b.pairs[i], b.geometry[0][i], b.part[i],
                                              kDeltaTime,
@@ -130,14 +174,16 @@ bool CalculatePropertiesForMotor(AngleBatch& b, std::size_t) {
 
 // Ratio -1: the impulse flips sign on every call, so velocities alternate
 // between two values instead of growing. Same arithmetic as any ratio.
-bool WarmStart(AngleBatch& b, std::size_t) {
+template <class Row>
+bool WarmStart(SpringRowBatch<Row>& b, std::size_t) {
   for (std::size_t i = 0; i < b.pairs.size(); ++i) {
-    b.kernels.warm_start(b.pairs[i], b.part[i], -1.0f);
+    Row::WarmStart(b.kernels, b.pairs[i], b.geometry[0][i], b.part[i], -1.0f);
   }
   return false;
 }
 
-bool SolveVelocity(AngleBatch& b, std::size_t) {
+template <class Row>
+bool SolveVelocity(SpringRowBatch<Row>& b, std::size_t) {
   bool applied = false;
   for (std::size_t i = 0; i < b.pairs.size(); ++i) {
     applied |= b.kernels.solve_velocity(b.pairs[i], b.geometry[0][i], b.part[i]);
@@ -145,7 +191,8 @@ bool SolveVelocity(AngleBatch& b, std::size_t) {
   return applied;
 }
 
-bool SolvePosition(AngleBatch& b, std::size_t iteration) {
+template <class Row>
+bool SolvePosition(SpringRowBatch<Row>& b, std::size_t iteration) {
   bool applied = false;
   for (std::size_t i = 0; i < b.pairs.size(); ++i) {
     applied |= b.kernels.solve_position(b.pairs[i], b.geometry[iteration & 1][i], b.part[i],
@@ -154,18 +201,25 @@ bool SolvePosition(AngleBatch& b, std::size_t iteration) {
   return applied;
 }
 
-const bool kRegistered = RegisterPartBenchmarks<AngleBatch, AngleKernels>(
-    "angle",
-    {{"calculate_properties", &CalculateProperties},
-     {"properties_frequency", &CalculatePropertiesWithFrequencyAndDamping},
-     {"properties_stiffness", &CalculatePropertiesWithStiffnessAndDamping},
-     {"properties_limit", &CalculatePropertiesForLimit},
-     {"properties_motor", &CalculatePropertiesForMotor},
-     {"warm_start", &WarmStart},
-     {"solve_velocity", &SolveVelocity},
-     {"solve_position", &SolvePosition},
-     {"deactivate", &DeactivateVerb<AngleBatch>},
-     {"is_active", &IsActiveVerb<AngleBatch>}});
+template <class Row>
+bool Register() {
+  using Batch = SpringRowBatch<Row>;
+  return RegisterPartBenchmarks<Batch, typename Row::Kernels>(
+      Row::kPart,
+      {{"calculate_properties", &CalculateProperties<Row>},
+       {"properties_frequency", &CalculatePropertiesWithFrequencyAndDamping<Row>},
+       {"properties_stiffness", &CalculatePropertiesWithStiffnessAndDamping<Row>},
+       {"properties_limit", &CalculatePropertiesForLimit<Row>},
+       {"properties_motor", &CalculatePropertiesForMotor<Row>},
+       {"warm_start", &WarmStart<Row>},
+       {"solve_velocity", &SolveVelocity<Row>},
+       {"solve_position", &SolvePosition<Row>},
+       {"deactivate", &DeactivateVerb<Batch>},
+       {"is_active", &IsActiveVerb<Batch>}});
+}
+
+const bool kAxisRegistered = Register<AxisRow>();
+const bool kAngleRegistered = Register<AngleRow>();
 
 }  // namespace
 }  // namespace manyworlds::bench
