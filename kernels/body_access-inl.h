@@ -1,6 +1,16 @@
 // Reading and writing a body's lanes from part kernels, with Jolt's rules for
 // static, kinematic and dynamic bodies (spec 1.5): static bodies read as zero
 // velocity, only the bodies a part is allowed to move are ever stored.
+//
+// Allowed degrees of freedom (Jolt's EAllowedDOFs, spec 4.3 and 1.1): every
+// linear velocity write is v <- lockT(v + dv) and every position step
+// x <- x + lockT(dx), with lockT zeroing the locked world axes; the world
+// inverse inertia has the rows and columns of locked rotation axes zeroed (the
+// vector form masks its input and its output). Angular velocity and rotation
+// steps are not masked again: they only ever come out of the masked inertia.
+// The masks cost nothing for unrestricted bodies: body.dof_restricted is the
+// same in every lane, so lane 0 decides a predictable scalar branch. Masking is
+// a select, so locked components are exactly +0 (as Jolt's bitwise AND).
 
 #if defined(MANYWORLDS_KERNELS_BODY_ACCESS_INL_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef MANYWORLDS_KERNELS_BODY_ACCESS_INL_H_
@@ -18,6 +28,25 @@ HWY_BEFORE_NAMESPACE();
 namespace manyworlds {
 namespace HWY_NAMESPACE {
 
+// True if any axis of the body is locked (uniform across lanes).
+HWY_INLINE bool DofRestricted(const BodyLanes& body) {
+  return body.dof_restricted[0] != 0.0f;
+}
+
+// v with the components of locked axes (non-zero lock entries) set to +0.
+HWY_INLINE Vec3 MaskAxes(const Vec3Lanes& locked, const Vec3& v, std::size_t offset) {
+  return {hn::IfThenElseZero(hn::Eq(Load(locked.x, offset), Zero()), v.x),
+          hn::IfThenElseZero(hn::Eq(Load(locked.y, offset), Zero()), v.y),
+          hn::IfThenElseZero(hn::Eq(Load(locked.z, offset), Zero()), v.z)};
+}
+
+// Jolt's MotionProperties::LockTranslation: v without the locked axes.
+HWY_INLINE Vec3 LockTranslation(const BodyLanes& body, const Vec3& v,
+                                std::size_t offset) {
+  if (!DofRestricted(body)) return v;
+  return MaskAxes(body.translation_locked, v, offset);
+}
+
 // Velocities as Body::GetLinear/AngularVelocity return them: zero if static.
 HWY_INLINE Vec3 LinearVelocity(const BodyLanes& body, MotionType motion,
                                std::size_t offset) {
@@ -30,26 +59,48 @@ HWY_INLINE Vec3 AngularVelocity(const BodyLanes& body, MotionType motion,
                                        : LoadVec3(body.angular_velocity, offset);
 }
 
-// World-space inverse inertia at the body's current rotation (matrix form).
+// World-space inverse inertia at the body's current rotation (matrix form),
+// rows and columns of locked rotation axes zeroed (Jolt's
+// GetInverseInertiaForRotation).
 HWY_INLINE Sym33 BodyInverseInertia(const BodyLanes& body, std::size_t offset) {
-  return WorldInverseInertia(LoadQuat(body.rotation, offset),
-                             LoadQuat(body.inertia_rotation, offset),
-                             LoadVec3(body.inv_inertia_diagonal, offset));
+  Sym33 inverse = WorldInverseInertia(LoadQuat(body.rotation, offset),
+                                      LoadQuat(body.inertia_rotation, offset),
+                                      LoadVec3(body.inv_inertia_diagonal, offset));
+  if (!DofRestricted(body)) return inverse;
+  const LaneMask x = hn::Eq(Load(body.rotation_locked.x, offset), Zero());
+  const LaneMask y = hn::Eq(Load(body.rotation_locked.y, offset), Zero());
+  const LaneMask z = hn::Eq(Load(body.rotation_locked.z, offset), Zero());
+  inverse.xx = hn::IfThenElseZero(x, inverse.xx);
+  inverse.xy = hn::IfThenElseZero(x, inverse.xy);
+  inverse.xz = hn::IfThenElseZero(x, inverse.xz);
+  inverse.yy = hn::IfThenElseZero(y, inverse.yy);
+  inverse.yz = hn::IfThenElseZero(hn::And(y, z), inverse.yz);
+  inverse.zz = hn::IfThenElseZero(z, inverse.zz);
+  return inverse;
 }
 
-// I^-1 v at the body's current rotation (vector form, spec 1.4).
+// I^-1 v at the body's current rotation (vector form, spec 1.4): mask(v),
+// rotate into inertia space, scale, rotate back, mask (Jolt's
+// MultiplyWorldSpaceInverseInertiaByVector).
 HWY_INLINE Vec3 BodyInverseInertiaTimes(const BodyLanes& body, const Vec3& v,
                                         std::size_t offset) {
-  return MultiplyWorldInverseInertia(LoadQuat(body.rotation, offset),
-                                     LoadQuat(body.inertia_rotation, offset),
-                                     LoadVec3(body.inv_inertia_diagonal, offset),
-                                     v);
+  const Quat rotation = LoadQuat(body.rotation, offset);
+  const Quat inertia_rotation = LoadQuat(body.inertia_rotation, offset);
+  const Vec3 diagonal = LoadVec3(body.inv_inertia_diagonal, offset);
+  if (!DofRestricted(body)) {
+    return MultiplyWorldInverseInertia(rotation, inertia_rotation, diagonal, v);
+  }
+  return MaskAxes(body.rotation_locked,
+                  MultiplyWorldInverseInertia(rotation, inertia_rotation, diagonal,
+                                              MaskAxes(body.rotation_locked, v, offset)),
+                  offset);
 }
 
-// v += dv, w += dw (a velocity step; callers pass signed increments).
+// v <- lockT(v + dv), w += dw (a velocity step; callers pass signed increments).
 HWY_INLINE void AddVelocityStep(BodyLanes& body, const Vec3& linear_delta,
                                 const Vec3& angular_delta, std::size_t offset) {
-  StoreVec3(Add(LoadVec3(body.linear_velocity, offset), linear_delta),
+  StoreVec3(LockTranslation(body, Add(LoadVec3(body.linear_velocity, offset), linear_delta),
+                            offset),
             body.linear_velocity, offset);
   StoreVec3(Add(LoadVec3(body.angular_velocity, offset), angular_delta),
             body.angular_velocity, offset);
@@ -61,14 +112,15 @@ HWY_INLINE void AddAngularVelocityStep(BodyLanes& body, const Vec3& delta,
 }
 HWY_INLINE void AddLinearVelocityStep(BodyLanes& body, const Vec3& delta,
                                       std::size_t offset) {
-  StoreVec3(Add(LoadVec3(body.linear_velocity, offset), delta),
+  StoreVec3(LockTranslation(body, Add(LoadVec3(body.linear_velocity, offset), delta), offset),
             body.linear_velocity, offset);
 }
 
-// x += dx (Jolt's AddPositionStep).
+// x += lockT(dx) (Jolt's AddPositionStep).
 HWY_INLINE void AddPositionStep(BodyLanes& body, const Vec3& delta,
                                 std::size_t offset) {
-  StoreVec3(Add(LoadVec3(body.position, offset), delta), body.position, offset);
+  StoreVec3(Add(LoadVec3(body.position, offset), LockTranslation(body, delta, offset)),
+            body.position, offset);
 }
 
 // q <- quat(theta) * q in lanes with |theta| > 1e-6 (Jolt's AddRotationStep).

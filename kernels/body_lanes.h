@@ -17,6 +17,27 @@ struct BodyLanes {
   LaneArray inv_mass;
   Vec3Lanes inv_inertia_diagonal;  // principal inverse inertia
   QuatLanes inertia_rotation;      // principal axes to body space
+  // Allowed degrees of freedom (Jolt's EAllowedDOFs, spec 4.3), a property of
+  // the scene's body, so the same in every lane. dof_restricted is 1 if any
+  // world axis is locked, else 0: body_access-inl.h tests lane 0 (a uniform,
+  // predictable branch) and only then applies the locks, so unrestricted
+  // bodies pay one scalar compare. Locks are 1 (locked) or 0 (free) per world
+  // axis, so that all-zero lanes are Jolt's default body: a lane whose locks
+  // are zero comes out bit-identical whether or not the masked path runs
+  // (which keeps real worlds exact even if a padding lane 0 holds garbage).
+  LaneArray dof_restricted;
+  Vec3Lanes translation_locked;  // linear velocity writes and position steps
+  Vec3Lanes rotation_locked;     // rows and columns of the world inverse inertia
+};
+
+// Per dynamic body: what the force step needs besides the state and mass
+// properties, per world so that randomising it costs nothing extra.
+struct BodyMotionLanes {
+  Vec3Lanes force;   // N, world; cleared after every step
+  Vec3Lanes torque;  // N m, world; cleared after every step
+  LaneArray linear_damping, angular_damping;         // 1/s
+  LaneArray max_linear_velocity, max_angular_velocity;  // m/s, rad/s
+  LaneArray gravity_factor;
 };
 
 // The two bodies a part acts on in one block, with their motion types (the

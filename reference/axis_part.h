@@ -188,11 +188,11 @@ class AxisPart {
   // v += M⁻¹ Jᵀ λ for dynamic bodies; true iff λ != 0.
   bool ApplyVelocityStep(Body<T>& body1, Body<T>& body2, const Vec3<T>& axis, T lambda) const {
     if (body1.IsDynamic()) {
-      body1.linear_velocity -= (lambda * body1.inv_mass) * axis;
+      body1.SubLinearVelocityStep((lambda * body1.inv_mass) * axis);
       body1.angular_velocity -= lambda * inv_i1_r1_plus_u_x_axis_;
     }
     if (body2.IsDynamic()) {
-      body2.linear_velocity += (lambda * body2.inv_mass) * axis;
+      body2.AddLinearVelocityStep((lambda * body2.inv_mass) * axis);
       body2.angular_velocity += lambda * inv_i2_r2_x_axis_;
     }
     return lambda != T(0);

@@ -155,12 +155,12 @@ class DualAxisPart {
                          const Vec2<T>& lambda) const {
     const Vec3<T> p = n1 * lambda(0) + n2 * lambda(1);
     if (body1.IsDynamic()) {
-      body1.linear_velocity -= body1.inv_mass * p;
+      body1.SubLinearVelocityStep(body1.inv_mass * p);
       body1.angular_velocity -=
           inv_i1_r1_plus_u_x_n_[0] * lambda(0) + inv_i1_r1_plus_u_x_n_[1] * lambda(1);
     }
     if (body2.IsDynamic()) {
-      body2.linear_velocity += body2.inv_mass * p;
+      body2.AddLinearVelocityStep(body2.inv_mass * p);
       body2.angular_velocity += inv_i2_r2_x_n_[0] * lambda(0) + inv_i2_r2_x_n_[1] * lambda(1);
     }
     return lambda(0) != T(0) || lambda(1) != T(0);

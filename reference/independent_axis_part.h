@@ -134,11 +134,11 @@ class IndependentAxisPart {
   bool ApplyVelocityStep(Body<T>& body1, Body<T>& body2, const Vec3<T>& n1, const Vec3<T>& n2,
                          T ratio, T lambda) const {
     if (body1.IsDynamic()) {
-      body1.linear_velocity += (lambda * body1.inv_mass) * n1;
+      body1.AddLinearVelocityStep((lambda * body1.inv_mass) * n1);
       body1.angular_velocity += lambda * inv_i1_r1_x_n1_;
     }
     if (body2.IsDynamic()) {
-      body2.linear_velocity += (lambda * ratio * body2.inv_mass) * n2;
+      body2.AddLinearVelocityStep((lambda * ratio * body2.inv_mass) * n2);
       body2.angular_velocity += lambda * inv_i2_ratio_r2_x_n2_;
     }
     return lambda != T(0);

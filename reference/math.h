@@ -39,7 +39,7 @@ Quat<T> QuatFromAxisAngle(const Vec3<T>& unit_axis, T angle) {
 
 // World-space inverse inertia I^-1 = (R_q R_I) diag(D) (R_q R_I)^T (spec 4.3).
 // `rotation` is the body's orientation, `inertia_rotation` the rotation of its
-// principal axes in body space. No DOF masks exist in this project yet.
+// principal axes in body space. The allowed-DOF masks are Body's (reference/body.h).
 template <class T>
 Mat33<T> WorldInverseInertia(const Quat<T>& rotation, const Quat<T>& inertia_rotation,
                              const Vec3<T>& inv_inertia_diagonal) {

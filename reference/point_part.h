@@ -121,11 +121,11 @@ class PointPart {
   // v += M⁻¹ Jᵀ λ for dynamic bodies; true iff any component of λ is non-zero.
   bool ApplyVelocityStep(Body<T>& body1, Body<T>& body2, const Vec3<T>& lambda) const {
     if (body1.IsDynamic()) {
-      body1.linear_velocity -= body1.inv_mass * lambda;
+      body1.SubLinearVelocityStep(body1.inv_mass * lambda);
       body1.angular_velocity -= inv_i1_r1_x_ * lambda;
     }
     if (body2.IsDynamic()) {
-      body2.linear_velocity += body2.inv_mass * lambda;
+      body2.AddLinearVelocityStep(body2.inv_mass * lambda);
       body2.angular_velocity += inv_i2_r2_x_ * lambda;
     }
     return !lambda.isZero(T(0));

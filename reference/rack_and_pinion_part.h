@@ -102,7 +102,7 @@ class RackAndPinionPart {
   // v += M⁻¹ Jᵀ λ with no motion-type check (spec 1.5); true iff λ != 0.
   bool ApplyVelocityStep(Body<T>& body1, Body<T>& body2, T lambda) const {
     body1.angular_velocity += lambda * inv_i1_hinge_axis_;
-    body2.linear_velocity -= lambda * ratio_inv_m2_slider_axis_;
+    body2.SubLinearVelocityStep(lambda * ratio_inv_m2_slider_axis_);
     return lambda != T(0);
   }
 

@@ -61,7 +61,7 @@ std::array<bool, kLaneWidth> RealLanes(const Layout& layout) {
 
 // Every field of these structs is a LaneArray (no padding bytes), so lane
 // `lane` of field f is the float at byte f * sizeof(LaneArray) + 4 * lane.
-static_assert(sizeof(BodyLanes) == 21 * sizeof(LaneArray));
+static_assert(sizeof(BodyLanes) == 28 * sizeof(LaneArray));
 static_assert(sizeof(DualAxisGeometry) == 12 * sizeof(LaneArray));
 static_assert(sizeof(DualAxisLanes) == 29 * sizeof(LaneArray));
 static_assert(sizeof(RackAndPinionGeometry) == 7 * sizeof(LaneArray));

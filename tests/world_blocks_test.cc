@@ -32,7 +32,8 @@ using ::testing::AllOf;
 using ::testing::Contains;
 using ::testing::HasSubstr;
 
-// Every LaneArray of a body, by name (21 floats per world).
+// Every LaneArray of a body, by name (28 floats per world: 21 of state and
+// mass properties, 7 of allowed degrees of freedom).
 std::vector<std::pair<const char*, const LaneArray*>> FieldsOf(const BodyLanes& b) {
   return {{"position.x", &b.position.x},
           {"position.y", &b.position.y},
@@ -54,9 +55,16 @@ std::vector<std::pair<const char*, const LaneArray*>> FieldsOf(const BodyLanes& 
           {"inertia_rotation.x", &b.inertia_rotation.x},
           {"inertia_rotation.y", &b.inertia_rotation.y},
           {"inertia_rotation.z", &b.inertia_rotation.z},
-          {"inertia_rotation.w", &b.inertia_rotation.w}};
+          {"inertia_rotation.w", &b.inertia_rotation.w},
+          {"dof_restricted", &b.dof_restricted},
+          {"translation_locked.x", &b.translation_locked.x},
+          {"translation_locked.y", &b.translation_locked.y},
+          {"translation_locked.z", &b.translation_locked.z},
+          {"rotation_locked.x", &b.rotation_locked.x},
+          {"rotation_locked.y", &b.rotation_locked.y},
+          {"rotation_locked.z", &b.rotation_locked.z}};
 }
-static_assert(sizeof(BodyLanes) == 21 * sizeof(LaneArray),
+static_assert(sizeof(BodyLanes) == 28 * sizeof(LaneArray),
               "FieldsOf must list every LaneArray of BodyLanes");
 
 // Field-by-field bit comparison of two body states, naming the field.
