@@ -1,0 +1,51 @@
+// One constraint (or body) of one block, as the step kernels see it: typed
+// views into the block's bytes at the offsets of the plan.
+#pragma once
+
+#include <cstddef>
+
+#include "batch/constraint_lanes.h"
+#include "batch/plan.h"
+#include "kernels/body_lanes.h"
+
+namespace manyworlds {
+
+template <class Lanes>
+Lanes& At(std::byte* block, std::size_t offset) {
+  return *reinterpret_cast<Lanes*>(block + offset);
+}
+
+inline BodyLanes& BodyAt(const StepPlan& plan, std::byte* block, std::size_t body) {
+  return At<BodyLanes>(block, plan.bodies[body].offset);
+}
+
+// A constraint of the plan inside one block.
+struct ConstraintBlock {
+  const ConstraintPlan& plan;
+  std::byte* block;
+  BodyPair bodies;
+
+  template <class Lanes>
+  Lanes& Main() const { return At<Lanes>(block, plan.offset); }
+  template <class Lanes>
+  Lanes& Limit() const { return At<Lanes>(block, plan.limit_offset); }
+  template <class Lanes>
+  Lanes& Motor() const { return At<Lanes>(block, plan.motor_offset); }
+};
+
+inline ConstraintBlock ConstraintInBlock(const StepPlan& plan, std::size_t constraint,
+                                         std::byte* block) {
+  const ConstraintPlan& c = plan.constraints[constraint];
+  return ConstraintBlock{c, block,
+                         BodyPair{&BodyAt(plan, block, c.body1), c.motion1,
+                                  &BodyAt(plan, block, c.body2), c.motion2}};
+}
+
+// Per-step numbers every constraint verb may need, uniform across the block.
+struct StepScalars {
+  float delta_time;          // of one substep
+  float warm_start_ratio;    // dt / dt_prev (first substep), 0 without warm start
+  float baumgarte;
+};
+
+}  // namespace manyworlds

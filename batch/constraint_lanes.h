@@ -1,0 +1,106 @@
+// Block storage of the constraint types: for 16 worlds, each type's per-world
+// parameters (anchors, axes, limits, motor targets, springs, ratios) next to
+// the parts it is built from (spec 3). Optional features (limits, motor or
+// friction) have their own struct, allocated only when the scene uses them.
+//
+// Everything is made of LaneArrays (16 floats, 64-byte aligned), so a block is
+// a plain sequence of LaneArrays: resetting, copying or hashing one world is
+// the same loop over lane `i` of every array, whatever the constraint.
+#pragma once
+
+#include "kernels/angle.h"
+#include "kernels/axis.h"
+#include "kernels/dual_axis.h"
+#include "kernels/gear.h"
+#include "kernels/hinge_rotation.h"
+#include "kernels/point.h"
+#include "kernels/rack_and_pinion.h"
+#include "kernels/rotation_euler.h"
+#include "manyworlds/lanes.h"
+
+namespace manyworlds {
+
+// ---- Point: one point part.
+struct PointConstraintLanes {
+  PointGeometry anchors;  // body-space anchors (parameters)
+  PointLanes point;
+};
+
+// ---- Fixed: rotation Euler, then point.
+struct FixedConstraintLanes {
+  PointGeometry anchors;
+  QuatLanes inv_initial_orientation;  // r0^-1 (parameter)
+  RotationEulerLanes rotation;
+  PointLanes point;
+};
+
+// ---- Hinge: [motor angle] -> point -> hinge rotation -> [limit angle].
+struct HingeConstraintLanes {
+  PointGeometry anchors;
+  Vec3Lanes hinge_axis1_local, hinge_axis2_local;  // unit, body space
+  QuatLanes inv_initial_orientation;  // r0^-1 from the normal/hinge frames
+  HingeRotationGeometry rotation_geometry;  // world hinge axes of this step
+  PointLanes point;
+  HingeRotationLanes rotation;
+  LaneArray angle;  // theta at setup (rad, (-pi, pi])
+};
+
+// Motor or friction row of a hinge (angle part) or slider (axis part).
+// geometry.spring holds the per-world motor spring.
+struct AngularMotorLanes {
+  LaneArray target_velocity, target_position;  // rad/s, rad
+  LaneArray min_force_limit, max_force_limit;  // N m
+  LaneArray max_friction;                      // N m
+  AngleGeometry geometry;
+  AngleLanes part;
+};
+struct LinearMotorLanes {
+  LaneArray target_velocity, target_position;  // m/s, m
+  LaneArray min_force_limit, max_force_limit;  // N
+  LaneArray max_friction;                      // N
+  AxisGeometry geometry;
+  AxisLanes part;
+};
+
+// Limit row; geometry.spring holds the per-world limit spring.
+struct AngularLimitLanes {
+  LaneArray min, max;  // rad
+  AngleGeometry geometry;
+  AngleLanes part;
+};
+struct LinearLimitLanes {
+  LaneArray min, max;  // m
+  AxisGeometry geometry;
+  AxisLanes part;
+};
+
+// ---- Slider: [motor axis] -> dual axis -> rotation Euler -> [limit axis].
+struct SliderConstraintLanes {
+  PointGeometry anchors;
+  Vec3Lanes slider_axis1_local, normal_axis1_local, binormal_axis1_local;  // body 1 space
+  QuatLanes inv_initial_orientation;
+  DualAxisGeometry dual_geometry;  // lever arms and normals of this step
+  Vec3Lanes separation;            // u = p2 - p1 of this step
+  Vec3Lanes slider_axis;           // world slider axis of this step
+  DualAxisLanes dual;
+  RotationEulerLanes rotation;
+  LaneArray position;  // d = u . slider axis at setup (m)
+};
+
+// ---- Gear: one gear part; position correction through the two hinges.
+struct GearConstraintLanes {
+  Vec3Lanes hinge_axis1_local, hinge_axis2_local;
+  GearGeometry geometry;  // world axes of this step and the ratio (parameter)
+  GearLanes part;
+  LaneArray error;        // position error of the current position iteration
+};
+
+// ---- Rack and pinion: one part; position correction through hinge + slider.
+struct RackAndPinionConstraintLanes {
+  Vec3Lanes hinge_axis1_local, slider_axis2_local;
+  RackAndPinionGeometry geometry;
+  RackAndPinionLanes part;
+  LaneArray error;
+};
+
+}  // namespace manyworlds

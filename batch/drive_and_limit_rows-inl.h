@@ -1,0 +1,77 @@
+// What hinge and slider share for their motor / friction row and their limit
+// row (spec 3): the impulse ranges and velocity bias of a drive, and the
+// impulse range of a limit. The hinge feeds them an angle part, the slider an
+// axis part; both motor structs (AngularMotorLanes, LinearMotorLanes) have
+// the same fields.
+//
+//   friction:              bias 0,            impulse in dt [-f, f]
+//   velocity motor:        bias -target_v,    impulse in dt [min, max]
+//   position motor:        bias 0, C through the motor spring, dt [min, max]
+//   position and velocity: bias -target_v, C through the spring, dt [min, max]
+//   limit:                 both ways if min == max, [0, inf) when the min
+//                          limit is the one engaged (nearer), else (-inf, 0]
+
+#if defined(MANYWORLDS_BATCH_DRIVE_AND_LIMIT_ROWS_INL_H_) == defined(HWY_TARGET_TOGGLE)
+#ifdef MANYWORLDS_BATCH_DRIVE_AND_LIMIT_ROWS_INL_H_
+#undef MANYWORLDS_BATCH_DRIVE_AND_LIMIT_ROWS_INL_H_
+#else
+#define MANYWORLDS_BATCH_DRIVE_AND_LIMIT_ROWS_INL_H_
+#endif
+
+#include <cfloat>
+#include <cstddef>
+
+#include "batch/plan.h"
+#include "kernels/lane_math-inl.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace manyworlds {
+namespace HWY_NAMESPACE {
+
+// Writes the drive's impulse range and velocity bias into motor.geometry and
+// flags the lanes whose motor spring has no stiffness (a position drive is
+// off there, as Jolt deactivates it; the scene's own setting has stiffness).
+template <class MotorLanes>
+HWY_INLINE void StoreDriveRow(DriveKind drive, LaneVec dt, MotorLanes& motor,
+                              LaneFlags& no_spring, std::size_t offset) {
+  LaneVec min_lambda, max_lambda;
+  if (drive == DriveKind::kFriction) {
+    max_lambda = hn::Mul(dt, Load(motor.max_friction, offset));
+    min_lambda = hn::Neg(max_lambda);
+  } else {
+    min_lambda = hn::Mul(dt, Load(motor.min_force_limit, offset));
+    max_lambda = hn::Mul(dt, Load(motor.max_force_limit, offset));
+  }
+  Store(min_lambda, motor.geometry.min_lambda, offset);
+  Store(max_lambda, motor.geometry.max_lambda, offset);
+  const bool velocity_bias =
+      drive == DriveKind::kVelocity || drive == DriveKind::kPositionAndVelocity;
+  Store(velocity_bias ? hn::Neg(Load(motor.target_velocity, offset)) : Zero(),
+        motor.geometry.bias, offset);
+  StoreFlags(hn::Le(Load(motor.geometry.spring.frequency_or_stiffness, offset), Zero()),
+             no_spring, offset);
+}
+
+// Friction and velocity drives are hard rows; position drives go through the
+// motor spring (CalculatePropertiesForMotor).
+inline bool DriveUsesSpring(DriveKind drive) {
+  return drive == DriveKind::kPosition || drive == DriveKind::kPositionAndVelocity;
+}
+
+// Writes a limit row's impulse range: `min_engaged` where the min limit is
+// the one that applies, both ways where min == max.
+template <class Geometry>
+HWY_INLINE void StoreLimitImpulseRange(LaneMask min_engaged, LaneMask both_ways,
+                                       Geometry& geometry, std::size_t offset) {
+  const LaneVec unbounded = Splat(FLT_MAX);
+  Store(hn::IfThenElse(hn::Or(both_ways, hn::Not(min_engaged)), hn::Neg(unbounded), Zero()),
+        geometry.min_lambda, offset);
+  Store(hn::IfThenElse(hn::Or(both_ways, min_engaged), unbounded, Zero()), geometry.max_lambda,
+        offset);
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace manyworlds
+HWY_AFTER_NAMESPACE();
+
+#endif  // MANYWORLDS_BATCH_DRIVE_AND_LIMIT_ROWS_INL_H_

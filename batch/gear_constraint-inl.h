@@ -1,0 +1,145 @@
+// Gear and rack-and-pinion constraints across worlds (spec 3, Gear and
+// RackAndPinion): one coupling part each, with position correction through
+// the hinges (and the rack's slider) when the scene names them.
+//
+// Gear:  a = q1 hinge1_local, b = q2 hinge2_local; C = theta1 + r theta2 with
+//        the two hinges' current angles (negated when the gear's body is the
+//        hinge's body 1, so theta is always the gear's own rotation, as in
+//        Jolt), folded as Jolt does:
+//        C = CenterAngleAroundZero(fmod(theta1 + r theta2, 2 pi)).
+// Rack:  a = q1 hinge_local (pinion), b = q2 slider_local (rack);
+//        C = CenterAngleAroundZero(fmod(theta - r d, 2 pi)) with the hinge's
+//        angle and the slider's position (each negated when the pinion / rack
+//        is the helper's body 1).
+// Setup computes the world axes and the part; the position step recomputes the
+// part at the current rotations and takes one Baumgarte step on C.
+
+#if defined(MANYWORLDS_BATCH_GEAR_CONSTRAINT_INL_H_) == defined(HWY_TARGET_TOGGLE)
+#ifdef MANYWORLDS_BATCH_GEAR_CONSTRAINT_INL_H_
+#undef MANYWORLDS_BATCH_GEAR_CONSTRAINT_INL_H_
+#else
+#define MANYWORLDS_BATCH_GEAR_CONSTRAINT_INL_H_
+#endif
+
+#include "batch/constraint_block.h"
+#include "batch/hinge_constraint-inl.h"
+#include "batch/slider_constraint-inl.h"
+#include "kernels/gear-inl.h"
+#include "kernels/rack_and_pinion-inl.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace manyworlds {
+namespace HWY_NAMESPACE {
+
+// Jolt's CenterAngleAroundZero(fmod(x, 2 pi)).
+HWY_INLINE LaneVec FoldedAngle(LaneVec x) {
+  const LaneVec turns = hn::Trunc(hn::Mul(x, Splat(0.159154943091895336f)));
+  return CenterAngleAroundZero(SubtractTurns(x, turns));
+}
+
+// A helper's reading of `body`'s motion: as measured when `body` is the
+// helper's body 2, negated when it is body 1 (scene-uniform).
+HWY_INLINE LaneVec AsSeenBy(const ConstraintBlock& helper, std::size_t body, LaneVec reading) {
+  return helper.plan.body2 == body ? reading : hn::Neg(reading);
+}
+
+// The world axes of both bodies from their body-space axes.
+HWY_INLINE void CouplingAxes(const BodyPair& bodies, const Vec3Lanes& axis1_local,
+                             const Vec3Lanes& axis2_local, Vec3Lanes& axis1,
+                             Vec3Lanes& axis2) {
+  ForEachChunk([&](std::size_t offset) {
+    StoreVec3(Rotate(LoadQuat(bodies.body1->rotation, offset), LoadVec3(axis1_local, offset)),
+              axis1, offset);
+    StoreVec3(Rotate(LoadQuat(bodies.body2->rotation, offset), LoadVec3(axis2_local, offset)),
+              axis2, offset);
+  });
+}
+
+// ---------------------------------------------------------------- gear
+
+inline void GearConstraintSetup(const ConstraintBlock& c, const StepScalars&) {
+  auto& s = c.Main<GearConstraintLanes>();
+  CouplingAxes(c.bodies, s.hinge_axis1_local, s.hinge_axis2_local, s.geometry.hinge_axis1,
+               s.geometry.hinge_axis2);
+  GearCalculateProperties(c.bodies, s.geometry, s.part);
+}
+
+inline void GearConstraintWarmStart(const ConstraintBlock& c, const StepScalars& step) {
+  GearWarmStart(c.bodies, c.Main<GearConstraintLanes>().part, step.warm_start_ratio);
+}
+
+inline bool GearConstraintSolveVelocity(const ConstraintBlock& c) {
+  auto& s = c.Main<GearConstraintLanes>();
+  return GearSolveVelocity(c.bodies, s.geometry, s.part);
+}
+
+inline bool GearConstraintSolvePosition(const StepPlan& plan, const ConstraintBlock& c,
+                                        const StepScalars& step) {
+  if (c.plan.helper1 == kNoConstraint) return false;
+  auto& s = c.Main<GearConstraintLanes>();
+  const ConstraintBlock hinge1 = ConstraintInBlock(plan, c.plan.helper1, c.block);
+  const ConstraintBlock hinge2 = ConstraintInBlock(plan, c.plan.helper2, c.block);
+  ForEachChunk([&](std::size_t offset) {
+    const LaneVec theta1 = AsSeenBy(hinge1, c.plan.body1,
+                                    HingeCurrentAngleOfChunk(
+                                        hinge1.bodies, hinge1.Main<HingeConstraintLanes>(), offset));
+    const LaneVec theta2 = AsSeenBy(hinge2, c.plan.body2,
+                                    HingeCurrentAngleOfChunk(
+                                        hinge2.bodies, hinge2.Main<HingeConstraintLanes>(), offset));
+    Store(FoldedAngle(hn::MulAdd(Load(s.geometry.ratio, offset), theta2, theta1)), s.error,
+          offset);
+  });
+  CouplingAxes(c.bodies, s.hinge_axis1_local, s.hinge_axis2_local, s.geometry.hinge_axis1,
+               s.geometry.hinge_axis2);
+  GearCalculateProperties(c.bodies, s.geometry, s.part);
+  return GearSolvePosition(c.bodies, s.error, s.part, step.baumgarte);
+}
+
+// ---------------------------------------------------------------- rack
+
+inline void RackAndPinionConstraintSetup(const ConstraintBlock& c, const StepScalars&) {
+  auto& s = c.Main<RackAndPinionConstraintLanes>();
+  CouplingAxes(c.bodies, s.hinge_axis1_local, s.slider_axis2_local, s.geometry.hinge_axis,
+               s.geometry.slider_axis);
+  RackAndPinionCalculateProperties(c.bodies, s.geometry, s.part);
+}
+
+inline void RackAndPinionConstraintWarmStart(const ConstraintBlock& c,
+                                             const StepScalars& step) {
+  RackAndPinionWarmStart(c.bodies, c.Main<RackAndPinionConstraintLanes>().part,
+                         step.warm_start_ratio);
+}
+
+inline bool RackAndPinionConstraintSolveVelocity(const ConstraintBlock& c) {
+  auto& s = c.Main<RackAndPinionConstraintLanes>();
+  return RackAndPinionSolveVelocity(c.bodies, s.geometry, s.part);
+}
+
+inline bool RackAndPinionConstraintSolvePosition(const StepPlan& plan,
+                                                 const ConstraintBlock& c,
+                                                 const StepScalars& step) {
+  if (c.plan.helper1 == kNoConstraint) return false;
+  auto& s = c.Main<RackAndPinionConstraintLanes>();
+  const ConstraintBlock hinge = ConstraintInBlock(plan, c.plan.helper1, c.block);
+  const ConstraintBlock slider = ConstraintInBlock(plan, c.plan.helper2, c.block);
+  ForEachChunk([&](std::size_t offset) {
+    const LaneVec theta = AsSeenBy(
+        hinge, c.plan.body1,
+        HingeCurrentAngleOfChunk(hinge.bodies, hinge.Main<HingeConstraintLanes>(), offset));
+    const LaneVec d = AsSeenBy(slider, c.plan.body2,
+                               SliderCurrentPositionOfChunk(
+                                   slider.bodies, slider.Main<SliderConstraintLanes>(), offset));
+    Store(FoldedAngle(hn::NegMulAdd(Load(s.geometry.ratio, offset), d, theta)), s.error,
+          offset);
+  });
+  CouplingAxes(c.bodies, s.hinge_axis1_local, s.slider_axis2_local, s.geometry.hinge_axis,
+               s.geometry.slider_axis);
+  RackAndPinionCalculateProperties(c.bodies, s.geometry, s.part);
+  return RackAndPinionSolvePosition(c.bodies, s.error, s.part, step.baumgarte);
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace manyworlds
+HWY_AFTER_NAMESPACE();
+
+#endif  // MANYWORLDS_BATCH_GEAR_CONSTRAINT_INL_H_

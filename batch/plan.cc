@@ -1,0 +1,498 @@
+// Scene checks and block layout (see plan.h).
+
+#include "batch/plan.h"
+
+#include <cmath>
+#include <sstream>
+#include <type_traits>
+
+#include "batch/constraint_lanes.h"
+#include "kernels/body_lanes.h"
+#include "manyworlds/error.h"
+#include "manyworlds/lanes.h"
+
+namespace manyworlds {
+namespace {
+
+const char* SettingsTypeName(const ConstraintSettings& settings) {
+  return std::visit(
+      [](const auto& s) -> const char* {
+        using S = std::decay_t<decltype(s)>;
+        if constexpr (std::is_same_v<S, PointConstraintSettings>) return "point";
+        if constexpr (std::is_same_v<S, FixedConstraintSettings>) return "fixed";
+        if constexpr (std::is_same_v<S, HingeConstraintSettings>) return "hinge";
+        if constexpr (std::is_same_v<S, SliderConstraintSettings>) return "slider";
+        if constexpr (std::is_same_v<S, GearConstraintSettings>) return "gear";
+        if constexpr (std::is_same_v<S, RackAndPinionConstraintSettings>)
+          return "rack_and_pinion";
+      },
+      settings);
+}
+
+// Raises SceneError "<what>: <field> <problem>".
+[[noreturn]] void Refuse(const std::string& what, const std::string& field,
+                         const std::string& problem) {
+  throw SceneError(what + ": " + field + " " + problem);
+}
+
+bool Finite(float x) { return std::isfinite(x); }
+bool Finite(const Float3& v) { return Finite(v[0]) && Finite(v[1]) && Finite(v[2]); }
+bool Finite(const Quaternion& q) {
+  return Finite(q[0]) && Finite(q[1]) && Finite(q[2]) && Finite(q[3]);
+}
+double Length(const Float3& v) {
+  return std::sqrt(double(v[0]) * v[0] + double(v[1]) * v[1] + double(v[2]) * v[2]);
+}
+
+void CheckFinite(const std::string& what, const std::string& field, float x) {
+  if (!Finite(x)) Refuse(what, field, "is not finite (" + std::to_string(x) + ")");
+}
+void CheckFinite(const std::string& what, const std::string& field, const Float3& v) {
+  if (!Finite(v)) Refuse(what, field, "has a non-finite component");
+}
+
+// A direction: finite and not zero (it is normalised when the batch is built).
+void CheckAxis(const std::string& what, const std::string& field, const Float3& axis) {
+  CheckFinite(what, field, axis);
+  if (Length(axis) < 1e-6) Refuse(what, field, "is zero (a direction is needed)");
+}
+
+// Two axes of one frame must be perpendicular (Jolt asserts it).
+void CheckPerpendicular(const std::string& what, const std::string& first,
+                        const Float3& a, const std::string& second, const Float3& b) {
+  const double dot = (double(a[0]) * b[0] + double(a[1]) * b[1] + double(a[2]) * b[2]) /
+                     (Length(a) * Length(b));
+  if (std::abs(dot) > 1e-3) {
+    Refuse(what, first + " and " + second,
+           "are not perpendicular (cosine " + std::to_string(dot) + ")");
+  }
+}
+
+void CheckBody(const BodySettings& body, const std::string& what) {
+  CheckFinite(what, "position", body.position);
+  CheckFinite(what, "linear_velocity", body.linear_velocity);
+  CheckFinite(what, "angular_velocity", body.angular_velocity);
+  if (!Finite(body.rotation)) Refuse(what, "rotation", "has a non-finite component");
+  const double norm = std::sqrt(double(body.rotation[0]) * body.rotation[0] +
+                                double(body.rotation[1]) * body.rotation[1] +
+                                double(body.rotation[2]) * body.rotation[2] +
+                                double(body.rotation[3]) * body.rotation[3]);
+  if (norm < 1e-6) Refuse(what, "rotation", "is a zero quaternion");
+  const unsigned dofs = static_cast<unsigned>(body.allowed_dofs);
+  if ((dofs & ~static_cast<unsigned>(AllowedDofs::kAll)) != 0) {
+    Refuse(what, "allowed_dofs", "has bits outside AllowedDofs::kAll (got " +
+                                     std::to_string(dofs) + ")");
+  }
+  if (body.motion_type != MotionType::kDynamic) return;
+  if (dofs == 0) {
+    Refuse(what, "allowed_dofs",
+           "must allow at least one degree of freedom for a dynamic body (got none; "
+           "make the body static instead)");
+  }
+  if (!Finite(body.mass) || body.mass <= 0.0f) {
+    Refuse(what, "mass", "must be finite and positive for a dynamic body (got " +
+                             std::to_string(body.mass) + ")");
+  }
+  for (int i = 0; i < 3; ++i) {
+    if (!Finite(body.inertia_diagonal[i]) || body.inertia_diagonal[i] <= 0.0f) {
+      Refuse(what, "inertia_diagonal[" + std::to_string(i) + "]",
+             "must be finite and positive for a dynamic body (got " +
+                 std::to_string(body.inertia_diagonal[i]) + ")");
+    }
+  }
+  if (!Finite(body.inertia_rotation)) {
+    Refuse(what, "inertia_rotation", "has a non-finite component");
+  }
+  const auto non_negative = [&](const char* field, float x) {
+    if (!Finite(x) || x < 0.0f) Refuse(what, field, "must be finite and >= 0");
+  };
+  non_negative("linear_damping", body.linear_damping);
+  non_negative("angular_damping", body.angular_damping);
+  const auto positive = [&](const char* field, float x) {
+    if (!(x > 0.0f)) Refuse(what, field, "must be positive");
+  };
+  positive("max_linear_velocity", body.max_linear_velocity);
+  positive("max_angular_velocity", body.max_angular_velocity);
+  CheckFinite(what, "gravity_factor", body.gravity_factor);
+}
+
+void CheckMotor(const std::string& what, MotorState state, const MotorSettings& motor,
+                float max_friction, const char* friction_field) {
+  if (!Finite(max_friction) || max_friction < 0.0f) {
+    Refuse(what, friction_field, "must be finite and >= 0");
+  }
+  if (std::isnan(motor.min_force_limit) || std::isnan(motor.max_force_limit) ||
+      motor.min_force_limit > motor.max_force_limit) {
+    Refuse(what, "motor.min_force_limit / max_force_limit",
+           "must be ordered, min <= max");
+  }
+  if (state == MotorState::kPosition && !motor.spring.HasStiffness()) {
+    Refuse(what, "motor.spring", "needs a positive frequency or stiffness for a position motor");
+  }
+  if (state == MotorState::kPositionAndVelocity && !motor.spring.HasStiffnessOrDamping()) {
+    Refuse(what, "motor.spring",
+           "needs stiffness or damping for a position-and-velocity motor");
+  }
+}
+
+DriveKind DriveOf(MotorState state, float max_friction) {
+  switch (state) {
+    case MotorState::kOff:
+      return max_friction > 0.0f ? DriveKind::kFriction : DriveKind::kNone;
+    case MotorState::kVelocity: return DriveKind::kVelocity;
+    case MotorState::kPosition: return DriveKind::kPosition;
+    case MotorState::kPositionAndVelocity: return DriveKind::kPositionAndVelocity;
+  }
+  return DriveKind::kNone;
+}
+
+// Bump allocator over one block; every struct is a whole number of LaneArrays.
+class BlockLayout {
+ public:
+  template <class T>
+  std::size_t Add() {
+    static_assert(sizeof(T) % sizeof(LaneArray) == 0, "block structs are LaneArrays");
+    static_assert(alignof(T) == alignof(LaneArray), "block structs are LaneArrays");
+    const std::size_t offset = bytes_;
+    bytes_ += sizeof(T);
+    return offset;
+  }
+  std::size_t bytes() const { return bytes_; }
+
+ private:
+  std::size_t bytes_ = 0;
+};
+
+}  // namespace
+
+const char* ConstraintTypeName(ConstraintType type) {
+  switch (type) {
+    case ConstraintType::kPoint: return "point";
+    case ConstraintType::kFixed: return "fixed";
+    case ConstraintType::kHinge: return "hinge";
+    case ConstraintType::kSlider: return "slider";
+    case ConstraintType::kGear: return "gear";
+    case ConstraintType::kRackAndPinion: return "rack_and_pinion";
+  }
+  return "unknown";
+}
+
+const char* DriveKindName(DriveKind kind) {
+  switch (kind) {
+    case DriveKind::kNone: return "none";
+    case DriveKind::kFriction: return "friction";
+    case DriveKind::kVelocity: return "velocity motor";
+    case DriveKind::kPosition: return "position motor";
+    case DriveKind::kPositionAndVelocity: return "position-and-velocity motor";
+  }
+  return "unknown";
+}
+
+std::string BodyLabel(const Scene& scene, std::size_t index) {
+  std::string label = "body #" + std::to_string(index);
+  if (index < scene.bodies().size() && !scene.bodies()[index].name.empty()) {
+    label += " '" + scene.bodies()[index].name + "'";
+  }
+  return label;
+}
+
+std::string ConstraintLabel(const Scene& scene, std::size_t index) {
+  if (index >= scene.constraints().size()) return "constraint #" + std::to_string(index);
+  const ConstraintSettings& settings = scene.constraints()[index];
+  std::string label = std::string(SettingsTypeName(settings)) + " constraint #" +
+                      std::to_string(index);
+  const std::string& name = std::visit([](const auto& s) -> const std::string& { return s.name; },
+                                       settings);
+  if (!name.empty()) label += " '" + name + "'";
+  return label;
+}
+
+std::string ConstraintPlan::PartsInOrder() const {
+  const std::string drive_row = has_motor() ? std::string(DriveKindName(drive)) : "";
+  const std::string limit_row = soft_limits ? "soft limits" : "limits";
+  switch (type) {
+    case ConstraintType::kPoint: return "point";
+    case ConstraintType::kFixed: return "rotation_euler point";
+    case ConstraintType::kHinge:
+      return (has_motor() ? "angle(" + drive_row + ") " : std::string()) +
+             "point hinge_rotation" + (has_limits() ? " angle(" + limit_row + ")" : "");
+    case ConstraintType::kSlider:
+      return (has_motor() ? "axis(" + drive_row + ") " : std::string()) +
+             "dual_axis rotation_euler" + (has_limits() ? " axis(" + limit_row + ")" : "");
+    case ConstraintType::kGear:
+      return helper1 != kNoConstraint ? "gear (position correction through the hinges)"
+                                      : "gear (velocity only)";
+    case ConstraintType::kRackAndPinion:
+      return helper1 != kNoConstraint
+                 ? "rack_and_pinion (position correction through hinge and slider)"
+                 : "rack_and_pinion (velocity only)";
+  }
+  return "";
+}
+
+void CheckStepSettings(const StepSettings& s) {
+  if (!(s.delta_time > 0.0f) || !std::isfinite(s.delta_time)) {
+    Refuse("step settings", "delta_time", "must be finite and positive");
+  }
+  if (s.substeps < 1) Refuse("step settings", "substeps", "must be at least 1");
+  if (s.velocity_iterations < 0) {
+    Refuse("step settings", "velocity_iterations", "must be >= 0");
+  }
+  if (s.position_iterations < 0) {
+    Refuse("step settings", "position_iterations", "must be >= 0");
+  }
+  if (!std::isfinite(s.baumgarte) || s.baumgarte < 0.0f) {
+    Refuse("step settings", "baumgarte", "must be finite and >= 0");
+  }
+  CheckFinite("step settings", "gravity", s.gravity);
+}
+
+StepPlan CompilePlan(const Scene& scene) {
+  StepPlan plan;
+  BlockLayout layout;
+  const std::size_t body_count = scene.bodies().size();
+  if (body_count == 0) Refuse("scene", "bodies", "is empty");
+
+  for (std::size_t i = 0; i < body_count; ++i) {
+    const BodySettings& body = scene.bodies()[i];
+    CheckBody(body, BodyLabel(scene, i));
+    plan.bodies.push_back(BodyPlan{BodyLabel(scene, i), body.motion_type,
+                                   layout.Add<BodyLanes>()});
+  }
+  for (BodyPlan& body : plan.bodies) {
+    if (body.motion == MotionType::kDynamic) {
+      body.motion_offset = layout.Add<BodyMotionLanes>();
+      plan.any_dynamic = true;
+    }
+  }
+
+  for (std::size_t index = 0; index < scene.constraints().size(); ++index) {
+    const ConstraintSettings& settings = scene.constraints()[index];
+    const std::string what = ConstraintLabel(scene, index);
+    ConstraintPlan c;
+    c.label = what;
+    std::visit([&](const auto& s) { c.body1 = s.body1; c.body2 = s.body2; }, settings);
+    if (c.body1 >= body_count) {
+      Refuse(what, "body1", "is " + std::to_string(c.body1) + ", but the scene has " +
+                                std::to_string(body_count) + " bodies");
+    }
+    if (c.body2 >= body_count) {
+      Refuse(what, "body2", "is " + std::to_string(c.body2) + ", but the scene has " +
+                                std::to_string(body_count) + " bodies");
+    }
+    if (c.body1 == c.body2) Refuse(what, "body2", "is the same body as body1");
+    c.motion1 = scene.bodies()[c.body1].motion_type;
+    c.motion2 = scene.bodies()[c.body2].motion_type;
+    if (c.motion1 != MotionType::kDynamic && c.motion2 != MotionType::kDynamic) {
+      Refuse(what, "body1 / body2",
+             "are both non-dynamic (" + BodyLabel(scene, c.body1) + " is " +
+                 MotionTypeName(c.motion1) + ", " + BodyLabel(scene, c.body2) + " is " +
+                 MotionTypeName(c.motion2) + "): nothing could move");
+    }
+
+    std::visit(
+        [&](const auto& s) {
+          using S = std::decay_t<decltype(s)>;
+          if constexpr (std::is_same_v<S, PointConstraintSettings>) {
+            CheckFinite(what, "point1", s.point1);
+            CheckFinite(what, "point2", s.point2);
+            c.type = ConstraintType::kPoint;
+            c.offset = layout.Add<PointConstraintLanes>();
+          } else if constexpr (std::is_same_v<S, FixedConstraintSettings>) {
+            CheckFinite(what, "point1", s.point1);
+            CheckFinite(what, "point2", s.point2);
+            CheckAxis(what, "axis_x1", s.axis_x1);
+            CheckAxis(what, "axis_y1", s.axis_y1);
+            CheckAxis(what, "axis_x2", s.axis_x2);
+            CheckAxis(what, "axis_y2", s.axis_y2);
+            CheckPerpendicular(what, "axis_x1", s.axis_x1, "axis_y1", s.axis_y1);
+            CheckPerpendicular(what, "axis_x2", s.axis_x2, "axis_y2", s.axis_y2);
+            if (s.auto_detect_point && s.space != ConstraintSpace::kWorldSpace) {
+              Refuse(what, "auto_detect_point", "needs space = kWorldSpace");
+            }
+            c.type = ConstraintType::kFixed;
+            c.offset = layout.Add<FixedConstraintLanes>();
+          } else if constexpr (std::is_same_v<S, HingeConstraintSettings>) {
+            CheckFinite(what, "point1", s.point1);
+            CheckFinite(what, "point2", s.point2);
+            CheckAxis(what, "hinge_axis1", s.hinge_axis1);
+            CheckAxis(what, "normal_axis1", s.normal_axis1);
+            CheckAxis(what, "hinge_axis2", s.hinge_axis2);
+            CheckAxis(what, "normal_axis2", s.normal_axis2);
+            CheckPerpendicular(what, "hinge_axis1", s.hinge_axis1, "normal_axis1",
+                               s.normal_axis1);
+            CheckPerpendicular(what, "hinge_axis2", s.hinge_axis2, "normal_axis2",
+                               s.normal_axis2);
+            if (!(s.limits_min >= -kPi && s.limits_min <= 0.0f)) {
+              Refuse(what, "limits_min", "must lie in [-pi, 0] (got " +
+                                             std::to_string(s.limits_min) + ")");
+            }
+            if (!(s.limits_max >= 0.0f && s.limits_max <= kPi)) {
+              Refuse(what, "limits_max", "must lie in [0, pi] (got " +
+                                             std::to_string(s.limits_max) + ")");
+            }
+            CheckMotor(what, s.motor_state, s.motor, s.max_friction_torque,
+                       "max_friction_torque");
+            CheckFinite(what, "target_angular_velocity", s.target_angular_velocity);
+            CheckFinite(what, "target_angle", s.target_angle);
+            c.type = ConstraintType::kHinge;
+            c.offset = layout.Add<HingeConstraintLanes>();
+            if (!(s.limits_min == -kPi && s.limits_max == kPi)) {
+              c.limit_offset = layout.Add<AngularLimitLanes>();
+              c.soft_limits = s.limits_spring.HasStiffness();
+              c.limit_spring_mode = s.limits_spring.mode;
+            }
+            c.drive = DriveOf(s.motor_state, s.max_friction_torque);
+            c.motor_spring_mode = s.motor.spring.mode;
+            if (c.drive != DriveKind::kNone) c.motor_offset = layout.Add<AngularMotorLanes>();
+          } else if constexpr (std::is_same_v<S, SliderConstraintSettings>) {
+            CheckFinite(what, "point1", s.point1);
+            CheckFinite(what, "point2", s.point2);
+            CheckAxis(what, "slider_axis1", s.slider_axis1);
+            CheckAxis(what, "normal_axis1", s.normal_axis1);
+            CheckAxis(what, "slider_axis2", s.slider_axis2);
+            CheckAxis(what, "normal_axis2", s.normal_axis2);
+            CheckPerpendicular(what, "slider_axis1", s.slider_axis1, "normal_axis1",
+                               s.normal_axis1);
+            CheckPerpendicular(what, "slider_axis2", s.slider_axis2, "normal_axis2",
+                               s.normal_axis2);
+            if (std::isnan(s.limits_min) || s.limits_min > 0.0f) {
+              Refuse(what, "limits_min", "must be <= 0 (got " +
+                                             std::to_string(s.limits_min) + ")");
+            }
+            if (std::isnan(s.limits_max) || s.limits_max < 0.0f) {
+              Refuse(what, "limits_max", "must be >= 0 (got " +
+                                             std::to_string(s.limits_max) + ")");
+            }
+            if (s.auto_detect_point && s.space != ConstraintSpace::kWorldSpace) {
+              Refuse(what, "auto_detect_point", "needs space = kWorldSpace");
+            }
+            CheckMotor(what, s.motor_state, s.motor, s.max_friction_force,
+                       "max_friction_force");
+            CheckFinite(what, "target_velocity", s.target_velocity);
+            CheckFinite(what, "target_position", s.target_position);
+            c.type = ConstraintType::kSlider;
+            c.offset = layout.Add<SliderConstraintLanes>();
+            if (s.limits_min != -FLT_MAX || s.limits_max != FLT_MAX) {
+              c.limit_offset = layout.Add<LinearLimitLanes>();
+              c.soft_limits = s.limits_spring.HasStiffness();
+              c.limit_spring_mode = s.limits_spring.mode;
+            }
+            c.drive = DriveOf(s.motor_state, s.max_friction_force);
+            c.motor_spring_mode = s.motor.spring.mode;
+            if (c.drive != DriveKind::kNone) c.motor_offset = layout.Add<LinearMotorLanes>();
+          } else {
+            // Gear and rack-and-pinion: both bodies must be able to turn / move
+            // (spec 1.5: the parts read motion properties of both bodies).
+            for (int which = 1; which <= 2; ++which) {
+              const std::size_t body = which == 1 ? s.body1 : s.body2;
+              if (scene.bodies()[body].motion_type == MotionType::kStatic) {
+                Refuse(what, "body" + std::to_string(which),
+                       "is static (" + BodyLabel(scene, body) +
+                           "); a gear or rack-and-pinion needs two non-static bodies");
+              }
+            }
+            CheckFinite(what, "ratio", s.ratio);
+            if constexpr (std::is_same_v<S, GearConstraintSettings>) {
+              CheckAxis(what, "hinge_axis1", s.hinge_axis1);
+              CheckAxis(what, "hinge_axis2", s.hinge_axis2);
+              c.type = ConstraintType::kGear;
+              c.offset = layout.Add<GearConstraintLanes>();
+              c.helper1 = s.hinge1;
+              c.helper2 = s.hinge2;
+            } else {
+              CheckAxis(what, "hinge_axis1", s.hinge_axis1);
+              CheckAxis(what, "slider_axis2", s.slider_axis2);
+              c.type = ConstraintType::kRackAndPinion;
+              c.offset = layout.Add<RackAndPinionConstraintLanes>();
+              c.helper1 = s.hinge;
+              c.helper2 = s.slider;
+            }
+          }
+        },
+        settings);
+    plan.constraints.push_back(std::move(c));
+  }
+
+  // Gear / rack helpers: both or neither, of the right type and bodies.
+  for (std::size_t index = 0; index < plan.constraints.size(); ++index) {
+    ConstraintPlan& c = plan.constraints[index];
+    if (c.type != ConstraintType::kGear && c.type != ConstraintType::kRackAndPinion) continue;
+    const bool gear = c.type == ConstraintType::kGear;
+    const char* field1 = gear ? "hinge1" : "hinge";
+    const char* field2 = gear ? "hinge2" : "slider";
+    if ((c.helper1 == kNoConstraint) != (c.helper2 == kNoConstraint)) {
+      Refuse(c.label, std::string(field1) + " / " + field2,
+             "must be given together (position correction needs both) or not at all");
+    }
+    if (c.helper1 == kNoConstraint) continue;
+    const auto check_helper = [&](std::size_t helper, const char* field,
+                                  ConstraintType type, std::size_t body) {
+      if (helper >= plan.constraints.size()) {
+        Refuse(c.label, field, "is " + std::to_string(helper) + ", but the scene has " +
+                                   std::to_string(plan.constraints.size()) +
+                                   " constraints");
+      }
+      const ConstraintPlan& h = plan.constraints[helper];
+      if (h.type != type) {
+        Refuse(c.label, field, "must name a " + std::string(ConstraintTypeName(type)) +
+                                   " constraint, but " + h.label + " is a " +
+                                   ConstraintTypeName(h.type));
+      }
+      if (h.body2 != body && h.body1 != body) {
+        Refuse(c.label, field, h.label + " does not act on " + BodyLabel(scene, body));
+      }
+    };
+    check_helper(c.helper1, field1, ConstraintType::kHinge, c.body1);
+    check_helper(c.helper2, field2, gear ? ConstraintType::kHinge : ConstraintType::kSlider,
+                 c.body2);
+  }
+
+  plan.block_bytes = layout.bytes();
+  return plan;
+}
+
+std::string DescribePlan(const StepPlan& plan, const StepSettings& settings) {
+  std::ostringstream out;
+  std::size_t dynamic = 0;
+  for (const BodyPlan& body : plan.bodies) dynamic += body.motion == MotionType::kDynamic;
+  out << "bodies: " << plan.bodies.size() << " (" << dynamic << " dynamic)\n";
+  for (const BodyPlan& body : plan.bodies) {
+    out << "  " << body.label << ": " << MotionTypeName(body.motion)
+        << (body.motion_offset != kAbsent ? ", forces, damping and velocity clamps" : "")
+        << "\n";
+  }
+  out << "constraints in solve order: " << plan.constraints.size() << "\n";
+  for (const ConstraintPlan& c : plan.constraints) {
+    out << "  " << c.label << " (" << plan.bodies[c.body1].label << " "
+        << MotionTypeName(c.motion1) << ", " << plan.bodies[c.body2].label << " "
+        << MotionTypeName(c.motion2) << "): " << c.PartsInOrder() << "\n";
+  }
+  const bool constraints = !plan.constraints.empty();
+  const int substeps = settings.substeps;
+  out << "step: " << substeps << " substep(s) of " << settings.delta_time / substeps
+      << " s, each:\n";
+  out << "  1. forces, gravity, damping, velocity clamps"
+      << (plan.any_dynamic ? "" : " (skipped: no dynamic body)") << "\n";
+  if (constraints) {
+    out << "  2. setup of every constraint\n";
+    out << "  3. warm start (" << (settings.warm_start ? "ratio dt/dt_prev" : "off: impulses zeroed")
+        << ")\n";
+    out << "  4. up to " << settings.velocity_iterations
+        << " velocity iterations (stop when no world applied an impulse)\n";
+  } else {
+    out << "  2-4. constraint setup and velocity iterations (skipped: no constraint)\n";
+  }
+  out << "  5. integration (exact axis-angle rotation, then position)\n";
+  if (constraints && settings.position_iterations > 0) {
+    out << "  6. up to " << settings.position_iterations
+        << " position iterations, Baumgarte " << settings.baumgarte << "\n";
+  } else {
+    out << "  6. position iterations (skipped)\n";
+  }
+  out << "storage: " << plan.block_bytes << " bytes per block of " << kLaneWidth
+      << " worlds, " << plan.block_bytes / kLaneWidth << " bytes per world\n";
+  return out.str();
+}
+
+}  // namespace manyworlds

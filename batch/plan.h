@@ -1,0 +1,93 @@
+// The plan of a scene: what one step of a block runs and where each piece of
+// data lives in the block.
+//
+// Compiling a scene checks it (SceneError naming the body or constraint and
+// the field), converts world-space settings to body space, and decides per
+// constraint which parts and features run (limits, motor, friction, springs),
+// from the body kinds (static, kinematic, dynamic). Storage is laid out only
+// for what is present. The step kernels follow the plan with scene-uniform
+// control flow; only per-world decisions are lane masks.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "manyworlds/batch.h"
+#include "manyworlds/motion_type.h"
+#include "manyworlds/scene.h"
+#include "manyworlds/spring_settings.h"
+
+namespace manyworlds {
+
+inline constexpr std::size_t kAbsent = static_cast<std::size_t>(-1);
+
+enum class ConstraintType : std::uint8_t {
+  kPoint,
+  kFixed,
+  kHinge,
+  kSlider,
+  kGear,
+  kRackAndPinion,
+};
+const char* ConstraintTypeName(ConstraintType type);
+
+// How a hinge or slider drives its free axis (from motor state and friction).
+enum class DriveKind : std::uint8_t {
+  kNone,                 // no motor row at all
+  kFriction,             // motor off, max friction > 0: zero-velocity row, clamped
+  kVelocity,             // bias -target velocity, clamped to the force limits
+  kPosition,             // motor spring towards the target position
+  kPositionAndVelocity,  // both
+};
+const char* DriveKindName(DriveKind kind);
+
+struct ConstraintPlan {
+  ConstraintType type;
+  std::string label;  // for messages and the printed plan
+  std::size_t body1, body2;
+  MotionType motion1, motion2;
+  std::size_t offset = kAbsent;        // the type's main storage in the block
+  std::size_t limit_offset = kAbsent;  // hinge / slider limit row, if limited
+  std::size_t motor_offset = kAbsent;  // hinge / slider motor or friction row
+  DriveKind drive = DriveKind::kNone;
+  SpringMode motor_spring_mode = SpringMode::kFrequencyAndDamping;
+  bool soft_limits = false;  // limit springs (no position-phase limit steps)
+  SpringMode limit_spring_mode = SpringMode::kFrequencyAndDamping;
+  // Gear: the hinges of body 1 and 2; rack-and-pinion: hinge and slider.
+  // Position correction runs only when both are given.
+  std::size_t helper1 = kNoConstraint, helper2 = kNoConstraint;
+
+  bool has_limits() const { return limit_offset != kAbsent; }
+  bool has_motor() const { return motor_offset != kAbsent; }
+  // The parts in solve order, e.g. "angle(motor) point hinge_rotation".
+  std::string PartsInOrder() const;
+};
+
+struct BodyPlan {
+  std::string label;
+  MotionType motion;
+  std::size_t offset;                    // BodyLanes in the block
+  std::size_t motion_offset = kAbsent;   // BodyMotionLanes, dynamic bodies only
+};
+
+struct StepPlan {
+  std::vector<BodyPlan> bodies;
+  std::vector<ConstraintPlan> constraints;
+  std::size_t block_bytes = 0;  // one block of kLaneWidth worlds
+  bool any_dynamic = false;
+
+  std::size_t block_floats() const { return block_bytes / sizeof(float); }
+};
+
+// Checks the scene and lays it out; throws SceneError.
+StepPlan CompilePlan(const Scene& scene);
+
+// Checks step settings; throws SceneError naming the field.
+void CheckStepSettings(const StepSettings& settings);
+
+// Human-readable plan: phases, constraints with their parts and features,
+// storage per block and per world.
+std::string DescribePlan(const StepPlan& plan, const StepSettings& settings);
+
+}  // namespace manyworlds

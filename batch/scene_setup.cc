@@ -1,0 +1,287 @@
+// The scene's initial block (see scene_setup.h): settings converted once, in
+// double, to what the kernels read.
+
+#include "batch/scene_setup.h"
+
+#include <Eigen/Dense>
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <type_traits>
+
+#include "batch/constraint_block.h"
+#include "batch/constraint_lanes.h"
+
+namespace manyworlds {
+namespace {
+
+using Vector = Eigen::Vector3d;
+using Rotation = Eigen::Quaterniond;
+
+Vector ToVector(const Float3& v) { return Vector(v[0], v[1], v[2]); }
+Rotation ToRotation(const Quaternion& q) {
+  return Rotation(q[3], q[0], q[1], q[2]).normalized();
+}
+
+// Writes one value into every lane: the initial block holds the scene in all
+// 16 worlds (padding worlds too, so they stay ordinary, finite worlds).
+void Fill(LaneArray& array, double value) {
+  std::fill(std::begin(array.lanes), std::end(array.lanes), static_cast<float>(value));
+}
+void Fill(Vec3Lanes& lanes, const Vector& v) {
+  Fill(lanes.x, v.x());
+  Fill(lanes.y, v.y());
+  Fill(lanes.z, v.z());
+}
+void Fill(QuatLanes& lanes, const Rotation& q) {
+  Fill(lanes.x, q.x());
+  Fill(lanes.y, q.y());
+  Fill(lanes.z, q.z());
+  Fill(lanes.w, q.w());
+}
+void Fill(SpringSettingsLanes& lanes, const SpringSettings& spring) {
+  Fill(lanes.frequency_or_stiffness, spring.frequency_or_stiffness);
+  Fill(lanes.damping, spring.damping);
+}
+
+// Jolt's allowed DOFs (spec 4.3) as 1/0 per world axis.
+unsigned Dofs(const BodySettings& body) { return static_cast<unsigned>(body.allowed_dofs); }
+Vector TranslationMask(const BodySettings& body) {
+  const unsigned d = Dofs(body);
+  return Vector((d & 1u) ? 1.0 : 0.0, (d & 2u) ? 1.0 : 0.0, (d & 4u) ? 1.0 : 0.0);
+}
+Vector RotationMask(const BodySettings& body) {
+  const unsigned d = Dofs(body);
+  return Vector((d & 8u) ? 1.0 : 0.0, (d & 16u) ? 1.0 : 0.0, (d & 32u) ? 1.0 : 0.0);
+}
+// v with the locked axes exactly +0.
+Vector Locked(const Vector& v, const Vector& mask) {
+  return Vector(mask.x() != 0.0 ? v.x() : 0.0, mask.y() != 0.0 ? v.y() : 0.0,
+                mask.z() != 0.0 ? v.z() : 0.0);
+}
+bool CanTranslate(const BodySettings& body) { return (Dofs(body) & 7u) != 0; }
+bool CanRotate(const BodySettings& body) { return (Dofs(body) & 56u) != 0; }
+
+// Jolt's MotionProperties::SetMassProperties: m^-1 = 0 without any allowed
+// translation (so auto-detected anchors and the parts see an immovable body).
+double InverseMass(const BodySettings& body) {
+  return body.motion_type == MotionType::kDynamic && CanTranslate(body) ? 1.0 / body.mass : 0.0;
+}
+
+struct Pose {
+  Vector position;
+  Rotation rotation;
+  double inv_mass;
+  bool can_move;  // not static
+};
+
+Pose PoseOf(const BodySettings& body) {
+  return Pose{ToVector(body.position), ToRotation(body.rotation), InverseMass(body),
+              body.motion_type != MotionType::kStatic};
+}
+
+// Converts a constraint's points and axes from its space to body-COM space.
+class Frames {
+ public:
+  Frames(const Pose& body1, const Pose& body2, ConstraintSpace space)
+      : body1_(body1), body2_(body2), world_(space == ConstraintSpace::kWorldSpace) {}
+
+  Vector Point1(const Float3& p) const { return Local(body1_, ToVector(p)); }
+  Vector Point2(const Float3& p) const { return Local(body2_, ToVector(p)); }
+  Vector Axis1(const Float3& a) const { return LocalAxis(body1_, ToVector(a)); }
+  Vector Axis2(const Float3& a) const { return LocalAxis(body2_, ToVector(a)); }
+
+  // Jolt's mAutoDetectPoint: the inverse-mass-weighted average of the centres
+  // of mass, or the centre of mass of the body that can move.
+  Vector AutoDetectedPoint() const {
+    if (!body1_.can_move) return body2_.position;
+    if (!body2_.can_move) return body1_.position;
+    const double total = body1_.inv_mass + body2_.inv_mass;
+    if (total == 0.0) return body1_.position;
+    return (body1_.inv_mass * body1_.position + body2_.inv_mass * body2_.position) / total;
+  }
+  Vector AutoPoint1() const { return body1_.rotation.conjugate() * (AutoDetectedPoint() - body1_.position); }
+  Vector AutoPoint2() const { return body2_.rotation.conjugate() * (AutoDetectedPoint() - body2_.position); }
+
+ private:
+  Vector Local(const Pose& body, const Vector& p) const {
+    return world_ ? Vector(body.rotation.conjugate() * (p - body.position)) : p;
+  }
+  Vector LocalAxis(const Pose& body, const Vector& a) const {
+    return (world_ ? Vector(body.rotation.conjugate() * a) : a).normalized();
+  }
+
+  Pose body1_, body2_;
+  bool world_;
+};
+
+// quat of the frame with columns (x, y, x cross y), all in body space.
+Rotation FrameRotation(const Vector& x, const Vector& y) {
+  Eigen::Matrix3d frame;
+  frame.col(0) = x;
+  frame.col(1) = y;
+  frame.col(2) = x.cross(y);
+  return Rotation(frame).normalized();
+}
+
+// r0^-1 = quat(C2) quat(C1)* (spec 2.6), with q2 = q1 r0 at rest.
+Rotation InverseInitialOrientation(const Rotation& frame1, const Rotation& frame2) {
+  return (frame2 * frame1.conjugate()).normalized();
+}
+
+void WriteBodies(const Scene& scene, const StepPlan& plan, std::byte* block) {
+  for (std::size_t i = 0; i < plan.bodies.size(); ++i) {
+    const BodySettings& body = scene.bodies()[i];
+    const bool dynamic = body.motion_type == MotionType::kDynamic;
+    const bool is_static = body.motion_type == MotionType::kStatic;
+    BodyLanes& lanes = At<BodyLanes>(block, plan.bodies[i].offset);
+    // Allowed DOFs (spec 4.3): static bodies never move, so never restricted.
+    // The initial velocities are locked as Jolt's SetLinear/AngularVelocity do.
+    const Vector translation_mask = TranslationMask(body);
+    const Vector rotation_mask = RotationMask(body);
+    const bool restricted = !is_static && body.allowed_dofs != AllowedDofs::kAll;
+    Fill(lanes.dof_restricted, restricted ? 1.0 : 0.0);
+    Fill(lanes.translation_locked, Vector(Vector::Ones() - translation_mask));
+    Fill(lanes.rotation_locked, Vector(Vector::Ones() - rotation_mask));
+    Fill(lanes.position, ToVector(body.position));
+    Fill(lanes.rotation, ToRotation(body.rotation));
+    Fill(lanes.linear_velocity, is_static ? Vector::Zero()
+                                          : Locked(ToVector(body.linear_velocity),
+                                                   translation_mask));
+    Fill(lanes.angular_velocity, is_static ? Vector::Zero()
+                                           : Locked(ToVector(body.angular_velocity),
+                                                    rotation_mask));
+    Fill(lanes.inv_mass, InverseMass(body));
+    // D = 0 and an identity inertia rotation without any allowed rotation (Jolt).
+    const bool rotates = dynamic && CanRotate(body);
+    const Vector inertia = ToVector(body.inertia_diagonal);
+    Fill(lanes.inv_inertia_diagonal, rotates ? Vector(inertia.cwiseInverse()) : Vector::Zero());
+    Fill(lanes.inertia_rotation,
+         dynamic && !rotates ? Rotation::Identity() : ToRotation(body.inertia_rotation));
+    if (plan.bodies[i].motion_offset == kAbsent) continue;
+    BodyMotionLanes& motion = At<BodyMotionLanes>(block, plan.bodies[i].motion_offset);
+    Fill(motion.force, Vector::Zero());
+    Fill(motion.torque, Vector::Zero());
+    Fill(motion.linear_damping, body.linear_damping);
+    Fill(motion.angular_damping, body.angular_damping);
+    Fill(motion.max_linear_velocity, body.max_linear_velocity);
+    Fill(motion.max_angular_velocity, body.max_angular_velocity);
+    Fill(motion.gravity_factor, body.gravity_factor);
+  }
+}
+
+template <class Motor>
+void WriteMotor(Motor& motor, const MotorSettings& settings, float target_velocity,
+                float target_position, float max_friction) {
+  Fill(motor.target_velocity, target_velocity);
+  Fill(motor.target_position, target_position);
+  Fill(motor.min_force_limit, settings.min_force_limit);
+  Fill(motor.max_force_limit, settings.max_force_limit);
+  Fill(motor.max_friction, max_friction);
+  Fill(motor.geometry.spring, settings.spring);
+}
+
+template <class Limit>
+void WriteLimit(Limit& limit, float min, float max, const SpringSettings& spring) {
+  Fill(limit.min, min);
+  Fill(limit.max, max);
+  Fill(limit.geometry.spring, spring);
+}
+
+void WriteConstraint(const ConstraintPlan& c, const ConstraintSettings& settings,
+                     const Frames& frames, std::byte* block) {
+  std::visit(
+      [&](const auto& s) {
+        using S = std::decay_t<decltype(s)>;
+        if constexpr (std::is_same_v<S, PointConstraintSettings>) {
+          auto& lanes = At<PointConstraintLanes>(block, c.offset);
+          Fill(lanes.anchors.r1_local, frames.Point1(s.point1));
+          Fill(lanes.anchors.r2_local, frames.Point2(s.point2));
+        } else if constexpr (std::is_same_v<S, FixedConstraintSettings>) {
+          auto& lanes = At<FixedConstraintLanes>(block, c.offset);
+          Fill(lanes.anchors.r1_local,
+               s.auto_detect_point ? frames.AutoPoint1() : frames.Point1(s.point1));
+          Fill(lanes.anchors.r2_local,
+               s.auto_detect_point ? frames.AutoPoint2() : frames.Point2(s.point2));
+          Fill(lanes.inv_initial_orientation,
+               InverseInitialOrientation(
+                   FrameRotation(frames.Axis1(s.axis_x1), frames.Axis1(s.axis_y1)),
+                   FrameRotation(frames.Axis2(s.axis_x2), frames.Axis2(s.axis_y2))));
+        } else if constexpr (std::is_same_v<S, HingeConstraintSettings>) {
+          auto& lanes = At<HingeConstraintLanes>(block, c.offset);
+          Fill(lanes.anchors.r1_local, frames.Point1(s.point1));
+          Fill(lanes.anchors.r2_local, frames.Point2(s.point2));
+          const Vector hinge1 = frames.Axis1(s.hinge_axis1);
+          const Vector hinge2 = frames.Axis2(s.hinge_axis2);
+          Fill(lanes.hinge_axis1_local, hinge1);
+          Fill(lanes.hinge_axis2_local, hinge2);
+          // Frames (X = normal, Z = hinge): Y = Z x X.
+          const Vector normal1 = frames.Axis1(s.normal_axis1);
+          const Vector normal2 = frames.Axis2(s.normal_axis2);
+          Fill(lanes.inv_initial_orientation,
+               InverseInitialOrientation(FrameRotation(normal1, hinge1.cross(normal1)),
+                                         FrameRotation(normal2, hinge2.cross(normal2))));
+          if (c.has_limits()) {
+            WriteLimit(At<AngularLimitLanes>(block, c.limit_offset), s.limits_min,
+                       s.limits_max, s.limits_spring);
+          }
+          if (c.has_motor()) {
+            const float target = c.has_limits()
+                                     ? std::clamp(s.target_angle, s.limits_min, s.limits_max)
+                                     : s.target_angle;
+            WriteMotor(At<AngularMotorLanes>(block, c.motor_offset), s.motor,
+                       s.target_angular_velocity, target, s.max_friction_torque);
+          }
+        } else if constexpr (std::is_same_v<S, SliderConstraintSettings>) {
+          auto& lanes = At<SliderConstraintLanes>(block, c.offset);
+          Fill(lanes.anchors.r1_local,
+               s.auto_detect_point ? frames.AutoPoint1() : frames.Point1(s.point1));
+          Fill(lanes.anchors.r2_local,
+               s.auto_detect_point ? frames.AutoPoint2() : frames.Point2(s.point2));
+          const Vector slider1 = frames.Axis1(s.slider_axis1);
+          const Vector normal1 = frames.Axis1(s.normal_axis1);
+          Fill(lanes.slider_axis1_local, slider1);
+          Fill(lanes.normal_axis1_local, normal1);
+          Fill(lanes.binormal_axis1_local, slider1.cross(normal1));
+          Fill(lanes.inv_initial_orientation,
+               InverseInitialOrientation(
+                   FrameRotation(slider1, normal1),
+                   FrameRotation(frames.Axis2(s.slider_axis2), frames.Axis2(s.normal_axis2))));
+          if (c.has_limits()) {
+            WriteLimit(At<LinearLimitLanes>(block, c.limit_offset), s.limits_min, s.limits_max,
+                       s.limits_spring);
+          }
+          if (c.has_motor()) {
+            const float target =
+                c.has_limits() ? std::clamp(s.target_position, s.limits_min, s.limits_max)
+                               : s.target_position;
+            WriteMotor(At<LinearMotorLanes>(block, c.motor_offset), s.motor, s.target_velocity,
+                       target, s.max_friction_force);
+          }
+        } else if constexpr (std::is_same_v<S, GearConstraintSettings>) {
+          auto& lanes = At<GearConstraintLanes>(block, c.offset);
+          Fill(lanes.hinge_axis1_local, frames.Axis1(s.hinge_axis1));
+          Fill(lanes.hinge_axis2_local, frames.Axis2(s.hinge_axis2));
+          Fill(lanes.geometry.ratio, s.ratio);
+        } else {
+          auto& lanes = At<RackAndPinionConstraintLanes>(block, c.offset);
+          Fill(lanes.hinge_axis1_local, frames.Axis1(s.hinge_axis1));
+          Fill(lanes.slider_axis2_local, frames.Axis2(s.slider_axis2));
+          Fill(lanes.geometry.ratio, s.ratio);
+        }
+      },
+      settings);
+}
+
+}  // namespace
+
+void WriteInitialBlock(const Scene& scene, const StepPlan& plan, std::byte* block) {
+  WriteBodies(scene, plan, block);
+  for (std::size_t i = 0; i < plan.constraints.size(); ++i) {
+    const ConstraintPlan& c = plan.constraints[i];
+    const Frames frames(PoseOf(scene.bodies()[c.body1]), PoseOf(scene.bodies()[c.body2]),
+                        std::visit([](const auto& s) { return s.space; }, scene.constraints()[i]));
+    WriteConstraint(c, scene.constraints()[i], frames, block);
+  }
+}
+
+}  // namespace manyworlds

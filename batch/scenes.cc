@@ -1,0 +1,272 @@
+// The reference scenes (docs/scenes.md; the brief's scenes-and-metrics spec).
+
+#include "manyworlds/scenes.h"
+
+#include <array>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace manyworlds {
+namespace {
+
+constexpr Float3 kX{1, 0, 0}, kY{0, 1, 0}, kZ{0, 0, 1};
+
+// The scene id in a form that can be switched on.
+enum class SceneId { kCartpole, kChain16, kChain16R100, kChain16R1000, kChain64, kRackPinion,
+                     kGearTrain };
+
+constexpr std::array<std::pair<std::string_view, SceneId>, 7> kScenes{{
+    {"cartpole", SceneId::kCartpole},
+    {"chain16", SceneId::kChain16},
+    {"chain16-r100", SceneId::kChain16R100},
+    {"chain16-r1000", SceneId::kChain16R1000},
+    {"chain64", SceneId::kChain64},
+    {"rackpinion", SceneId::kRackPinion},
+    {"geartrain", SceneId::kGearTrain},
+}};
+
+SceneId ParseId(std::string_view id) {
+  std::string valid;
+  for (const auto& [name, scene] : kScenes) {
+    if (name == id) return scene;
+    valid += (valid.empty() ? "" : ", ") + std::string(name);
+  }
+  throw std::invalid_argument("unknown reference scene '" + std::string(id) +
+                              "'; valid ids: " + valid);
+}
+
+// Jolt's body defaults except damping, which every reference scene sets to 0.
+BodySettings Dynamic(std::string name, float mass, Float3 inertia, Float3 position) {
+  BodySettings body;
+  body.name = std::move(name);
+  body.motion_type = MotionType::kDynamic;
+  body.mass = mass;
+  body.inertia_diagonal = inertia;
+  body.position = position;
+  body.linear_damping = 0.0f;
+  body.angular_damping = 0.0f;
+  return body;
+}
+
+// The static world body every scene anchors its joints to, at the origin.
+BodySettings StaticWorld() {
+  BodySettings body;
+  body.name = "world";
+  body.motion_type = MotionType::kStatic;
+  body.linear_damping = 0.0f;
+  body.angular_damping = 0.0f;
+  return body;
+}
+
+// A hinge about Z through `point` (world space), normal axes X in both bodies
+// unless given.
+HingeConstraintSettings HingeAboutZ(std::string name, std::size_t body1, std::size_t body2,
+                                    Float3 point, Float3 normal2 = kX) {
+  HingeConstraintSettings hinge;
+  hinge.name = std::move(name);
+  hinge.body1 = body1;
+  hinge.body2 = body2;
+  hinge.space = ConstraintSpace::kWorldSpace;
+  hinge.point1 = hinge.point2 = point;
+  hinge.hinge_axis1 = hinge.hinge_axis2 = kZ;
+  hinge.normal_axis1 = kX;
+  hinge.normal_axis2 = normal2;
+  return hinge;
+}
+
+// A velocity motor: target (rad/s), torque limited to [-max, max] (N m).
+void VelocityMotor(HingeConstraintSettings& hinge, float target, float max_torque) {
+  hinge.motor_state = MotorState::kVelocity;
+  hinge.target_angular_velocity = target;
+  hinge.motor.min_force_limit = -max_torque;
+  hinge.motor.max_force_limit = max_torque;
+}
+
+// A slider along X (normal Y) through `point` (world space).
+SliderConstraintSettings SliderAlongX(std::string name, std::size_t body1, std::size_t body2,
+                                      Float3 point) {
+  SliderConstraintSettings slider;
+  slider.name = std::move(name);
+  slider.body1 = body1;
+  slider.body2 = body2;
+  slider.space = ConstraintSpace::kWorldSpace;
+  slider.point1 = slider.point2 = point;
+  slider.slider_axis1 = slider.slider_axis2 = kX;
+  slider.normal_axis1 = slider.normal_axis2 = kY;
+  return slider;
+}
+
+Scene Cartpole() {
+  using namespace reference_scene;
+  constexpr double kAngle = 0.1;  // rad about Z, the pole's start
+  const double c = std::cos(kAngle), s = std::sin(kAngle);
+  Scene scene;
+  scene.AddBody(StaticWorld());
+  scene.AddBody(Dynamic("cart", 1.0f, {0.1f, 0.1f, 0.1f}, {0, 0, 0}));
+  // Rod along Y, COM 0.5 above the hinge (the cart's COM), rotated 0.1 rad
+  // about Z: COM = R (0, 0.5, 0).
+  BodySettings pole = Dynamic("pole", 0.1f, {0.0084f, 0.0001f, 0.0084f},
+                              {float(-0.5 * s), float(0.5 * c), 0.0f});
+  pole.rotation = {0.0f, 0.0f, float(std::sin(kAngle / 2)), float(std::cos(kAngle / 2))};
+  scene.AddBody(pole);
+  scene.AddConstraint(SliderAlongX("rail", kWorld, kCart, {0, 0, 0}));
+  // Normal axis 2 is the pole's X axis, R (1, 0, 0): the hinge angle is the
+  // pole's angle from upright, 0.1 rad at the start.
+  scene.AddConstraint(
+      HingeAboutZ("pole hinge", kCart, kPole, {0, 0, 0}, {float(c), float(s), 0.0f}));
+  return scene;
+}
+
+// `links` rods 0.5 m long along X, COM of link i at (0.25 + 0.5 i, 0, 0),
+// ball joints world-link0 at the origin and link i-link i+1 at 0.5 (i + 1);
+// the last link's mass and inertia times `last_scale`.
+Scene Chain(std::size_t links, float last_scale) {
+  constexpr float kMass = 1.0f;
+  constexpr Float3 kInertia{0.001f, 0.0208f, 0.0208f};
+  Scene scene;
+  scene.AddBody(StaticWorld());
+  for (std::size_t i = 0; i < links; ++i) {
+    const float scale = i + 1 == links ? last_scale : 1.0f;
+    scene.AddBody(Dynamic("link" + std::to_string(i), kMass * scale,
+                          {kInertia[0] * scale, kInertia[1] * scale, kInertia[2] * scale},
+                          {0.25f + 0.5f * float(i), 0.0f, 0.0f}));
+  }
+  for (std::size_t i = 0; i < links; ++i) {
+    PointConstraintSettings ball;
+    ball.name = i == 0 ? std::string("world-link0")
+                       : "link" + std::to_string(i - 1) + "-link" + std::to_string(i);
+    ball.body1 = i;  // the world, then link i - 1
+    ball.body2 = i + 1;
+    ball.space = ConstraintSpace::kWorldSpace;
+    ball.point1 = ball.point2 = {0.5f * float(i), 0.0f, 0.0f};
+    scene.AddConstraint(ball);
+  }
+  return scene;
+}
+
+Scene RackPinion() {
+  using namespace reference_scene;
+  Scene scene;
+  scene.AddBody(StaticWorld());
+  scene.AddBody(Dynamic("pinion", 1.0f, {0.005f, 0.005f, 0.005f}, {0.0f, 0.1f, 0.0f}));
+  scene.AddBody(Dynamic("rack", 2.0f, {0.01f, 0.1f, 0.1f}, {0, 0, 0}));
+  HingeConstraintSettings hinge =
+      HingeAboutZ("pinion hinge", kWorld, kPinion, {0.0f, 0.1f, 0.0f});
+  VelocityMotor(hinge, 2.0f, 5.0f);
+  const std::size_t hinge_index = scene.AddConstraint(hinge);
+  const std::size_t slider_index =
+      scene.AddConstraint(SliderAlongX("rack slider", kWorld, kRack, {0, 0, 0}));
+  RackAndPinionConstraintSettings rack;
+  rack.name = "rack and pinion";
+  rack.body1 = kPinion;
+  rack.body2 = kRack;
+  rack.space = ConstraintSpace::kWorldSpace;
+  rack.hinge_axis1 = kZ;
+  rack.slider_axis2 = kX;
+  rack.ratio = 10.0f;  // rad/m: 1 rad of pinion = 0.1 m of rack
+  rack.hinge = hinge_index;
+  rack.slider = slider_index;
+  scene.AddConstraint(rack);
+  return scene;
+}
+
+Scene GearTrain() {
+  using namespace reference_scene;
+  // Disc-like gears of radius 0.1 and 0.2 (I = m r^2 / 2), meshing: axles 0.3 apart.
+  constexpr Float3 kAxle1{0, 0, 0}, kAxle2{0.3f, 0, 0};
+  Scene scene;
+  scene.AddBody(StaticWorld());
+  scene.AddBody(Dynamic("gear1", 1.0f, {0.005f, 0.005f, 0.005f}, kAxle1));
+  scene.AddBody(Dynamic("gear2", 2.0f, {0.04f, 0.04f, 0.04f}, kAxle2));
+  HingeConstraintSettings hinge1 = HingeAboutZ("gear1 hinge", kWorld, kGear1, kAxle1);
+  VelocityMotor(hinge1, 2.0f, 5.0f);
+  const std::size_t hinge1_index = scene.AddConstraint(hinge1);
+  const std::size_t hinge2_index =
+      scene.AddConstraint(HingeAboutZ("gear2 hinge", kWorld, kGear2, kAxle2));
+  GearConstraintSettings gear;
+  gear.name = "gear";
+  gear.body1 = kGear1;
+  gear.body2 = kGear2;
+  gear.space = ConstraintSpace::kWorldSpace;
+  gear.hinge_axis1 = gear.hinge_axis2 = kZ;
+  gear.ratio = 2.0f;  // theta1 + 2 theta2 = 0
+  gear.hinge1 = hinge1_index;
+  gear.hinge2 = hinge2_index;
+  scene.AddConstraint(gear);
+  return scene;
+}
+
+// splitmix64's finaliser (Steele, Lea, Flood 2014).
+constexpr std::uint64_t Mix(std::uint64_t x) {
+  x += 0x9E3779B97F4A7C15ull;
+  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
+  x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
+  return x ^ (x >> 31);
+}
+
+// The cartpole's force: a hash of (seed, step), shared by every world of a
+// step, then of the world; its top 24 bits are a float in [0, 1) without
+// rounding, scaled to [-10, 10) N.
+std::uint64_t StepKey(std::uint64_t seed, std::uint64_t step) { return Mix(Mix(seed) ^ step); }
+float ForceOf(std::uint64_t step_key, std::uint64_t world) {
+  const float unit = float(Mix(step_key ^ world) >> 40) * 0x1p-24f;
+  return -10.0f + 20.0f * unit;
+}
+
+}  // namespace
+
+std::vector<std::string> ReferenceSceneIds() {
+  std::vector<std::string> ids;
+  for (const auto& scene : kScenes) ids.emplace_back(scene.first);
+  return ids;
+}
+
+Scene MakeReferenceScene(std::string_view id) {
+  switch (ParseId(id)) {
+    case SceneId::kCartpole: return Cartpole();
+    case SceneId::kChain16: return Chain(16, 1.0f);
+    case SceneId::kChain16R100: return Chain(16, 100.0f);
+    case SceneId::kChain16R1000: return Chain(16, 1000.0f);
+    case SceneId::kChain64: return Chain(64, 1.0f);
+    case SceneId::kRackPinion: return RackPinion();
+    case SceneId::kGearTrain: return GearTrain();
+  }
+  throw std::logic_error("MakeReferenceScene: unhandled scene id");
+}
+
+float CartpoleForce(std::uint64_t seed, std::uint64_t world, std::uint64_t step) {
+  return ForceOf(StepKey(seed, step), world);
+}
+
+SceneActions::SceneActions(std::string_view id) {
+  if (ParseId(id) == SceneId::kCartpole) {
+    forces_per_world_ = 1;
+    body_ = reference_scene::kCart;
+  }
+}
+
+BodyForce SceneActions::Force(std::size_t i, std::uint64_t world, std::uint64_t step,
+                              std::uint64_t seed) const {
+  if (i >= forces_per_world_) {
+    throw std::out_of_range("SceneActions::Force: index " + std::to_string(i) + " but " +
+                            std::to_string(forces_per_world_) + " force(s) per world");
+  }
+  return BodyForce{body_, {CartpoleForce(seed, world, step), 0.0f, 0.0f}};
+}
+
+void SceneActions::Apply(Batch& batch, std::uint64_t step, std::uint64_t seed) const {
+  if (empty()) return;
+  const std::uint64_t key = StepKey(seed, step);
+  const std::size_t worlds = batch.world_count();
+  std::vector<float> forces(worlds * 3, 0.0f);
+  for (std::size_t world = 0; world < worlds; ++world) forces[world * 3] = ForceOf(key, world);
+  batch.SetForces(body_, forces);
+}
+
+void ApplyReferenceActions(std::string_view id, Batch& batch, std::uint64_t step,
+                           std::uint64_t seed) {
+  SceneActions(id).Apply(batch, step, seed);
+}
+
+}  // namespace manyworlds

@@ -1,0 +1,195 @@
+// Slider constraint across worlds (spec 3, Slider): one translational degree
+// of freedom along the slider axis, rotation fixed, with optional limits
+// (hard or soft), motor (velocity, position, both) or friction.
+//
+// Parts in solve order: axis (motor / friction) -> dual axis -> rotation
+// Euler -> axis (limits).
+//   r1 = q1 r1_local, r2 = q2 r2_local, u = x2 + r2 - x1 - r1
+//   dual axis on n1 = q1 normal1, n2 = q1 (slider1 x normal1), lever r1 + u
+//   slider axis s = q1 slider1, position d = u . s
+// Limits [min <= 0, max >= 0] engage where d <= min or d >= max, C = d - min
+// or d - max; impulse range both ways if min == max, [0, inf) below min,
+// (-inf, 0] above max. Motor rows on s: friction bias 0 and range dt [-f, f];
+// velocity bias -target and range dt [min, max]; position C = d - target
+// through the motor spring; position-and-velocity both.
+// Position phase: dual axis (recomputed) -> rotation Euler (recomputed) ->
+// for hard limits r, u, s, d and the limit row recomputed (which may
+// deactivate the limit and zero its impulse, spec 1.3) and one step on C.
+
+#if defined(MANYWORLDS_BATCH_SLIDER_CONSTRAINT_INL_H_) == defined(HWY_TARGET_TOGGLE)
+#ifdef MANYWORLDS_BATCH_SLIDER_CONSTRAINT_INL_H_
+#undef MANYWORLDS_BATCH_SLIDER_CONSTRAINT_INL_H_
+#else
+#define MANYWORLDS_BATCH_SLIDER_CONSTRAINT_INL_H_
+#endif
+
+#include <cfloat>
+
+#include "batch/constraint_block.h"
+#include "batch/drive_and_limit_rows-inl.h"
+#include "kernels/axis-inl.h"
+#include "kernels/dual_axis-inl.h"
+#include "kernels/rotation_euler-inl.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace manyworlds {
+namespace HWY_NAMESPACE {
+
+struct SliderFrame {
+  Vec3 r2, separation, r1_plus_u, slider_axis;
+};
+
+// Lever arms, separation and slider axis at the current poses.
+HWY_INLINE SliderFrame SliderFrameOfChunk(const BodyPair& bodies,
+                                          const SliderConstraintLanes& s,
+                                          std::size_t offset) {
+  const Quat q1 = LoadQuat(bodies.body1->rotation, offset);
+  const Vec3 x1 = LoadVec3(bodies.body1->position, offset);
+  const Vec3 x2 = LoadVec3(bodies.body2->position, offset);
+  const Vec3 r1 = Rotate(q1, LoadVec3(s.anchors.r1_local, offset));
+  SliderFrame frame;
+  frame.r2 = Rotate(LoadQuat(bodies.body2->rotation, offset), LoadVec3(s.anchors.r2_local, offset));
+  frame.r1_plus_u = Sub(Add(x2, frame.r2), x1);
+  frame.separation = Sub(frame.r1_plus_u, r1);
+  frame.slider_axis = Rotate(q1, LoadVec3(s.slider_axis1_local, offset));
+  return frame;
+}
+
+// The slider's current position d, for the rack-and-pinion position step.
+HWY_INLINE LaneVec SliderCurrentPositionOfChunk(const BodyPair& bodies,
+                                                const SliderConstraintLanes& s,
+                                                std::size_t offset) {
+  const SliderFrame frame = SliderFrameOfChunk(bodies, s, offset);
+  return Dot(frame.separation, frame.slider_axis);
+}
+
+// Writes the dual-axis geometry, u, s and d of the current poses.
+HWY_INLINE void SliderGeometry(const ConstraintBlock& c) {
+  auto& s = c.Main<SliderConstraintLanes>();
+  ForEachChunk([&](std::size_t offset) {
+    const SliderFrame frame = SliderFrameOfChunk(c.bodies, s, offset);
+    const Quat q1 = LoadQuat(c.bodies.body1->rotation, offset);
+    StoreVec3(frame.r1_plus_u, s.dual_geometry.r1_plus_u, offset);
+    StoreVec3(frame.r2, s.dual_geometry.r2, offset);
+    StoreVec3(Rotate(q1, LoadVec3(s.normal_axis1_local, offset)), s.dual_geometry.n1, offset);
+    StoreVec3(Rotate(q1, LoadVec3(s.binormal_axis1_local, offset)), s.dual_geometry.n2,
+              offset);
+    StoreVec3(frame.separation, s.separation, offset);
+    StoreVec3(frame.slider_axis, s.slider_axis, offset);
+    Store(Dot(frame.separation, frame.slider_axis), s.position, offset);
+  });
+}
+
+// An axis row along the slider axis with the lever arms of this step.
+HWY_INLINE void SliderAxisRow(const SliderConstraintLanes& s, AxisGeometry& row,
+                              std::size_t offset) {
+  StoreVec3(LoadVec3(s.dual_geometry.r1_plus_u, offset), row.r1_plus_u, offset);
+  StoreVec3(LoadVec3(s.dual_geometry.r2, offset), row.r2, offset);
+  StoreVec3(LoadVec3(s.slider_axis, offset), row.axis, offset);
+}
+
+// The limit row from d; deactivates the lanes inside the limits.
+inline void SliderLimitProperties(const ConstraintBlock& c, const StepScalars& step) {
+  const auto& s = c.Main<SliderConstraintLanes>();
+  auto& limit = c.Limit<LinearLimitLanes>();
+  LaneFlags inside;
+  ForEachChunk([&](std::size_t offset) {
+    SliderAxisRow(s, limit.geometry, offset);
+    const LaneVec d = Load(s.position, offset);
+    const LaneVec min = Load(limit.min, offset);
+    const LaneVec max = Load(limit.max, offset);
+    const LaneMask below = hn::Le(d, min);
+    Store(hn::Sub(d, hn::IfThenElse(below, min, max)), limit.geometry.error, offset);
+    StoreLimitImpulseRange(below, hn::Eq(min, max), limit.geometry, offset);
+    StoreFlags(hn::Not(hn::Or(below, hn::Ge(d, max))), inside, offset);
+  });
+  AxisCalculatePropertiesForLimit(c.bodies, limit.geometry, limit.part, step.delta_time,
+                                  c.plan.limit_spring_mode);
+  AxisDeactivate(limit.part, inside);
+}
+
+// The motor or friction row from d and the per-world targets.
+inline void SliderMotorProperties(const ConstraintBlock& c, const StepScalars& step) {
+  const auto& s = c.Main<SliderConstraintLanes>();
+  auto& motor = c.Motor<LinearMotorLanes>();
+  const DriveKind drive = c.plan.drive;
+  const LaneVec dt = Splat(step.delta_time);
+  LaneFlags no_spring;
+  ForEachChunk([&](std::size_t offset) {
+    SliderAxisRow(s, motor.geometry, offset);
+    StoreDriveRow(drive, dt, motor, no_spring, offset);
+    Store(hn::Sub(Load(s.position, offset), Load(motor.target_position, offset)),
+          motor.geometry.error, offset);
+  });
+  if (!DriveUsesSpring(drive)) {
+    AxisCalculateProperties(c.bodies, motor.geometry, motor.part);
+  } else {
+    AxisCalculatePropertiesForMotor(c.bodies, motor.geometry, motor.part, step.delta_time,
+                                    c.plan.motor_spring_mode);
+    if (drive == DriveKind::kPosition) AxisDeactivate(motor.part, no_spring);
+  }
+}
+
+inline void SliderConstraintSetup(const ConstraintBlock& c, const StepScalars& step) {
+  auto& s = c.Main<SliderConstraintLanes>();
+  SliderGeometry(c);
+  DualAxisCalculateProperties(c.bodies, s.dual_geometry, s.dual);
+  RotationEulerCalculateProperties(c.bodies, s.rotation);
+  if (c.plan.has_limits()) SliderLimitProperties(c, step);
+  if (c.plan.has_motor()) SliderMotorProperties(c, step);
+}
+
+inline void SliderConstraintWarmStart(const ConstraintBlock& c, const StepScalars& step) {
+  auto& s = c.Main<SliderConstraintLanes>();
+  const float ratio = step.warm_start_ratio;
+  if (c.plan.has_motor()) {
+    auto& motor = c.Motor<LinearMotorLanes>();
+    AxisWarmStart(c.bodies, motor.geometry, motor.part, ratio);
+  }
+  DualAxisWarmStart(c.bodies, s.dual_geometry, s.dual, ratio);
+  RotationEulerWarmStart(c.bodies, s.rotation, ratio);
+  if (c.plan.has_limits()) {
+    auto& limit = c.Limit<LinearLimitLanes>();
+    AxisWarmStart(c.bodies, limit.geometry, limit.part, ratio);
+  }
+}
+
+inline bool SliderConstraintSolveVelocity(const ConstraintBlock& c) {
+  auto& s = c.Main<SliderConstraintLanes>();
+  bool applied = false;
+  if (c.plan.has_motor()) {
+    auto& motor = c.Motor<LinearMotorLanes>();
+    applied |= AxisSolveVelocity(c.bodies, motor.geometry, motor.part);
+  }
+  applied |= DualAxisSolveVelocity(c.bodies, s.dual_geometry, s.dual);
+  applied |= RotationEulerSolveVelocity(c.bodies, s.rotation);
+  if (c.plan.has_limits()) {
+    auto& limit = c.Limit<LinearLimitLanes>();
+    applied |= AxisSolveVelocity(c.bodies, limit.geometry, limit.part);
+  }
+  return applied;
+}
+
+inline bool SliderConstraintSolvePosition(const ConstraintBlock& c, const StepScalars& step) {
+  auto& s = c.Main<SliderConstraintLanes>();
+  SliderGeometry(c);
+  DualAxisCalculateProperties(c.bodies, s.dual_geometry, s.dual);
+  bool applied =
+      DualAxisSolvePosition(c.bodies, s.dual_geometry, s.separation, s.dual, step.baumgarte);
+  RotationEulerCalculateProperties(c.bodies, s.rotation);
+  applied |= RotationEulerSolvePosition(c.bodies, s.inv_initial_orientation, s.rotation,
+                                        step.baumgarte);
+  if (c.plan.has_limits() && !c.plan.soft_limits) {
+    SliderGeometry(c);
+    SliderLimitProperties(c, step);
+    auto& limit = c.Limit<LinearLimitLanes>();
+    applied |= AxisSolvePosition(c.bodies, limit.geometry, limit.part, step.baumgarte);
+  }
+  return applied;
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace manyworlds
+HWY_AFTER_NAMESPACE();
+
+#endif  // MANYWORLDS_BATCH_SLIDER_CONSTRAINT_INL_H_

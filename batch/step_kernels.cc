@@ -1,0 +1,160 @@
+// One step of one block (spec 4.1), per Highway target:
+//
+//   for each substep (dt = step dt / substeps):
+//     1. forces, gravity, damping, velocity clamps      (dynamic bodies)
+//     2. setup of every constraint, in scene order      (positions at step start)
+//     3. warm start: impulses *= dt / dt_prev (first substep, 0 if off; 1 later)
+//     4. velocity iterations, until none of the block's worlds applied an impulse
+//     5. integration                                    (dynamic and kinematic)
+//     6. position iterations, until none moved
+//   forces and torques cleared.
+//
+// The early-outs are result-neutral (spec 7): a pass in which no lane applied
+// an impulse leaves every velocity unchanged, so the next pass would too.
+// Scene-uniform decisions (constraint types, body kinds, features) are plain
+// control flow from the plan; per-world ones are masks inside the parts.
+
+#include "batch/step_kernels.h"
+
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "batch/step_kernels.cc"
+#include "hwy/foreach_target.h"  // IWYU pragma: keep
+
+#include "batch/constraint_block.h"
+#include "batch/fixed_constraint-inl.h"
+#include "batch/gear_constraint-inl.h"
+#include "batch/hinge_constraint-inl.h"
+#include "batch/point_constraint-inl.h"
+#include "batch/slider_constraint-inl.h"
+#include "hwy/highway.h"
+#include "kernels/integration-inl.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace manyworlds {
+namespace HWY_NAMESPACE {
+
+inline void SetupConstraint(const ConstraintBlock& c, const StepScalars& step) {
+  switch (c.plan.type) {
+    case ConstraintType::kPoint: return PointConstraintSetup(c, step);
+    case ConstraintType::kFixed: return FixedConstraintSetup(c, step);
+    case ConstraintType::kHinge: return HingeConstraintSetup(c, step);
+    case ConstraintType::kSlider: return SliderConstraintSetup(c, step);
+    case ConstraintType::kGear: return GearConstraintSetup(c, step);
+    case ConstraintType::kRackAndPinion: return RackAndPinionConstraintSetup(c, step);
+  }
+}
+
+inline void WarmStartConstraint(const ConstraintBlock& c, const StepScalars& step) {
+  switch (c.plan.type) {
+    case ConstraintType::kPoint: return PointConstraintWarmStart(c, step);
+    case ConstraintType::kFixed: return FixedConstraintWarmStart(c, step);
+    case ConstraintType::kHinge: return HingeConstraintWarmStart(c, step);
+    case ConstraintType::kSlider: return SliderConstraintWarmStart(c, step);
+    case ConstraintType::kGear: return GearConstraintWarmStart(c, step);
+    case ConstraintType::kRackAndPinion: return RackAndPinionConstraintWarmStart(c, step);
+  }
+}
+
+inline bool SolveConstraintVelocity(const ConstraintBlock& c) {
+  switch (c.plan.type) {
+    case ConstraintType::kPoint: return PointConstraintSolveVelocity(c);
+    case ConstraintType::kFixed: return FixedConstraintSolveVelocity(c);
+    case ConstraintType::kHinge: return HingeConstraintSolveVelocity(c);
+    case ConstraintType::kSlider: return SliderConstraintSolveVelocity(c);
+    case ConstraintType::kGear: return GearConstraintSolveVelocity(c);
+    case ConstraintType::kRackAndPinion: return RackAndPinionConstraintSolveVelocity(c);
+  }
+  return false;
+}
+
+inline bool SolveConstraintPosition(const StepPlan& plan, const ConstraintBlock& c,
+                                    const StepScalars& step) {
+  switch (c.plan.type) {
+    case ConstraintType::kPoint: return PointConstraintSolvePosition(c, step);
+    case ConstraintType::kFixed: return FixedConstraintSolvePosition(c, step);
+    case ConstraintType::kHinge: return HingeConstraintSolvePosition(c, step);
+    case ConstraintType::kSlider: return SliderConstraintSolvePosition(c, step);
+    case ConstraintType::kGear: return GearConstraintSolvePosition(plan, c, step);
+    case ConstraintType::kRackAndPinion:
+      return RackAndPinionConstraintSolvePosition(plan, c, step);
+  }
+  return false;
+}
+
+void StepBlock(const StepPlan& plan, std::byte* block, const StepParams& params) {
+  const std::size_t constraint_count = plan.constraints.size();
+  // ConstraintBlocks are cheap views; build them once per call.
+  std::vector<ConstraintBlock> constraints;
+  constraints.reserve(constraint_count);
+  for (std::size_t i = 0; i < constraint_count; ++i) {
+    constraints.push_back(ConstraintInBlock(plan, i, block));
+  }
+  const LaneVec dt = Splat(params.substep_delta_time);
+  const Vec3 gravity{Splat(params.gravity[0]), Splat(params.gravity[1]),
+                     Splat(params.gravity[2])};
+
+  for (int substep = 0; substep < params.substeps; ++substep) {
+    // Jolt: the dt ratio (0 without warm start) in the first substep only;
+    // later substeps continue from the previous substep's impulses.
+    const float ratio = substep == 0 ? params.first_warm_start_ratio : 1.0f;
+    const StepScalars step{params.substep_delta_time, ratio, params.baumgarte};
+
+    for (const BodyPlan& body : plan.bodies) {
+      if (body.motion != MotionType::kDynamic) continue;
+      ApplyForcesAndDamping(At<BodyLanes>(block, body.offset),
+                            At<BodyMotionLanes>(block, body.motion_offset), gravity, dt);
+    }
+
+    if (constraint_count != 0) {
+      for (const ConstraintBlock& c : constraints) SetupConstraint(c, step);
+      for (const ConstraintBlock& c : constraints) WarmStartConstraint(c, step);
+      for (int iteration = 0; iteration < params.velocity_iterations; ++iteration) {
+        bool applied = false;
+        for (const ConstraintBlock& c : constraints) applied |= SolveConstraintVelocity(c);
+        if (!applied) break;
+      }
+    }
+
+    for (const BodyPlan& body : plan.bodies) {
+      if (body.motion == MotionType::kStatic) continue;
+      const BodyMotionLanes* motion =
+          body.motion == MotionType::kDynamic
+              ? &At<BodyMotionLanes>(block, body.motion_offset)
+              : nullptr;
+      IntegrateBody(At<BodyLanes>(block, body.offset), motion, dt);
+    }
+
+    if (constraint_count != 0) {
+      for (int iteration = 0; iteration < params.position_iterations; ++iteration) {
+        bool applied = false;
+        for (const ConstraintBlock& c : constraints) {
+          applied |= SolveConstraintPosition(plan, c, step);
+        }
+        if (!applied) break;
+      }
+    }
+  }
+
+  // Forces act for one Step call (all its substeps), as Jolt's AddForce.
+  for (const BodyPlan& body : plan.bodies) {
+    if (body.motion != MotionType::kDynamic) continue;
+    BodyMotionLanes& motion = At<BodyMotionLanes>(block, body.motion_offset);
+    motion.force = Vec3Lanes{};
+    motion.torque = Vec3Lanes{};
+  }
+}
+
+const StepKernels* GetStepKernels() {
+  static const StepKernels kTable = {MANYWORLDS_THIS_TARGET, &StepBlock};
+  return &kTable;
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace manyworlds
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace manyworlds {
+MANYWORLDS_EXPORT_KERNEL_TABLE(StepKernels, GetStepKernels)
+}  // namespace manyworlds
+#endif  // HWY_ONCE

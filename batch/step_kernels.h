@@ -1,0 +1,31 @@
+// The step of one block of worlds, compiled once per Highway target: the
+// whole of Jolt's pipeline (spec 4.1) runs on one block while it is in cache.
+#pragma once
+
+#include <cstddef>
+
+#include "batch/plan.h"
+#include "kernels/kernel_table.h"
+#include "manyworlds/scene.h"
+
+namespace manyworlds {
+
+// Uniform across the batch for one Step call.
+struct StepParams {
+  float substep_delta_time;
+  int substeps;
+  float first_warm_start_ratio;  // dt / dt_prev of the first substep (0: cold)
+  int velocity_iterations;
+  int position_iterations;
+  float baumgarte;
+  Float3 gravity;
+};
+
+struct StepKernels {
+  TargetInfo target;
+  void (*step_block)(const StepPlan& plan, std::byte* block, const StepParams& params);
+};
+
+MANYWORLDS_DECLARE_KERNEL_TABLE(StepKernels)
+
+}  // namespace manyworlds

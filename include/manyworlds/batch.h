@@ -1,0 +1,143 @@
+// A batch: N copies of one scene, stepped together, one SIMD lane per world.
+//
+//   Scene scene = ...;                       // bodies and constraints
+//   Batch batch(scene, 4096);                // 4096 worlds, all cores
+//   batch.SetForce(world, body, {1, 0, 0});  // actions, per world
+//   batch.Step(StepSettings{});              // one step of every world
+//   batch.GetState(states);                  // observations
+//
+// Every world runs exactly the scalar Gauss-Seidel sweep of Jolt's solver
+// (spec 4.1) for its own data; worlds never interact, and a world's result
+// does not depend on its lane, its block, the thread count or its neighbours.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string>
+
+#include "manyworlds/scene.h"
+
+namespace manyworlds {
+
+// Jolt's PhysicsSettings that matter to constraint-only worlds (spec 4.2).
+struct StepSettings {
+  float delta_time = 1.0f / 60.0f;  // s, of the whole step
+  int substeps = 1;                 // Jolt's collision steps: dt / substeps each
+  int velocity_iterations = 10;
+  int position_iterations = 2;
+  float baumgarte = 0.2f;
+  bool warm_start = true;
+  Float3 gravity{0.0f, -9.81f, 0.0f};
+};
+
+struct BatchOptions {
+  int threads = 0;  // 0: every core TBB sees
+  // Blocks of 16 worlds per TBB task; 0 picks enough tasks for the threads.
+  std::size_t blocks_per_task = 0;
+  // Highway target bit (e.g. HWY_AVX2, HWY_SCALAR) to run instead of the best
+  // one this CPU supports; 0 dispatches. For SIMD-efficiency benchmarks and
+  // per-target tests; an unsupported target is refused.
+  std::int64_t target = 0;
+};
+
+// The 13 numbers of one body's state, in this order, in every state array.
+inline constexpr std::size_t kStateFloatsPerBody = 13;
+enum class StateField : std::uint8_t {
+  kPosition,         // 3: centre of mass, world (offset 0)
+  kRotation,         // 4: quaternion x, y, z, w (offset 3)
+  kLinearVelocity,   // 3 (offset 7)
+  kAngularVelocity,  // 3 (offset 10)
+};
+std::size_t StateFieldOffset(StateField field);
+std::size_t StateFieldSize(StateField field);
+
+class Batch {
+ public:
+  // Throws SceneError naming the body or constraint and field of a bad scene.
+  Batch(const Scene& scene, std::size_t world_count, BatchOptions options = {});
+  ~Batch();
+  Batch(Batch&&) noexcept;
+  Batch& operator=(Batch&&) noexcept;
+
+  std::size_t world_count() const;
+  std::size_t body_count() const;
+  std::size_t constraint_count() const;
+  const Scene& scene() const;
+
+  // Steps every world by settings.delta_time. Throws SceneError (naming the
+  // field) for a non-positive dt or substep count or negative iterations.
+  void Step(const StepSettings& settings);
+
+  // ---- state, world-major: [world][body][13] (see StateField)
+  void GetState(std::span<float> out) const;
+  // Writes every world, or only those with mask[world] != 0. Rotations are
+  // normalised; velocities of static bodies stay zero.
+  void SetState(std::span<const float> in, std::span<const std::uint8_t> world_mask = {});
+  // One field of every world and body: [world][body][StateFieldSize(field)].
+  void GetField(StateField field, std::span<float> out) const;
+  void SetField(StateField field, std::span<const float> in);
+
+  // Back to the scene's initial state (state, accumulated impulses, motor
+  // targets and per-world overrides) in the worlds with mask[world] != 0.
+  void Reset(std::span<const std::uint8_t> world_mask);
+  // Like Reset, then the given state ([world][body][13], every world's slot
+  // present, only masked worlds read).
+  void ResetTo(std::span<const std::uint8_t> world_mask, std::span<const float> state);
+
+  // ---- actions, per world. Forces and torques (world space, through the
+  // centre of mass) act during the next Step and are then cleared, as Jolt's
+  // AddForce. The span forms take [world][body][3].
+  void SetForce(std::size_t world, std::size_t body, Float3 force);
+  void SetTorque(std::size_t world, std::size_t body, Float3 torque);
+  void SetForces(std::span<const float> forces);
+  void SetTorques(std::span<const float> torques);
+  // One body in every world: per_world holds [world][3]. The cheap form for
+  // RL actions (no per-call checks, lanes written directly).
+  void SetForces(std::size_t body, std::span<const float> per_world);
+  void SetTorques(std::size_t body, std::span<const float> per_world);
+
+  // Motor targets of a hinge (rad/s, rad) or slider (m/s, m), per world.
+  // Position targets are clamped into the limits as Jolt does.
+  void SetTargetVelocity(std::size_t world, std::size_t constraint, float velocity);
+  void SetTargetPosition(std::size_t world, std::size_t constraint, float position);
+  void SetTargetVelocities(std::size_t constraint, std::span<const float> per_world);
+  void SetTargetPositions(std::size_t constraint, std::span<const float> per_world);
+
+  // ---- per-world parameters (domain randomisation); the scene's values are
+  // the defaults, and a parameter nobody overrides costs nothing extra.
+  void SetMassProperties(std::size_t world, std::size_t body, float mass,
+                         Float3 inertia_diagonal);
+  void SetDamping(std::size_t world, std::size_t body, float linear, float angular);
+  void SetGravityFactor(std::size_t world, std::size_t body, float factor);
+  void SetLimits(std::size_t world, std::size_t constraint, float min, float max);
+  void SetLimitsSpring(std::size_t world, std::size_t constraint, float frequency_or_stiffness,
+                       float damping);
+  void SetMotorSpring(std::size_t world, std::size_t constraint, float frequency_or_stiffness,
+                      float damping);
+  void SetMotorLimits(std::size_t world, std::size_t constraint, float min, float max);
+  void SetMaxFriction(std::size_t world, std::size_t constraint, float max_friction);
+  void SetRatio(std::size_t world, std::size_t constraint, float ratio);
+
+  // ---- reports
+  // The plan: which kernels run in which phase, per constraint, with storage,
+  // for the given step settings (by default those of the last Step).
+  std::string Plan() const;
+  std::string Plan(const StepSettings& settings) const;
+  std::size_t BytesPerWorld() const;  // state, parameters and solver scratch
+  const char* SimdTarget() const;     // Highway's name of the dispatched target
+  std::size_t SimdLanes() const;      // floats per vector on it
+  int threads() const;
+
+  // The largest position error of any constraint in a world after the last
+  // step (m for linear rows, rad for angular rows), for accuracy reports.
+  float MaxConstraintError(std::size_t world) const;
+
+  class Impl;
+
+ private:
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace manyworlds

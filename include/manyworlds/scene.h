@@ -1,0 +1,208 @@
+// A scene: the bodies and constraints of one world, which a Batch copies into
+// N worlds. Settings are modelled on Jolt's BodyCreationSettings and
+// constraint settings (spec 3 and 4.3), with Jolt's defaults.
+//
+// A scene is plain data; nothing is checked until a Batch is built from it,
+// which refuses a bad scene with a SceneError naming the body or constraint
+// and the field at fault.
+#pragma once
+
+#include <array>
+#include <cfloat>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "manyworlds/motion_type.h"
+#include "manyworlds/spring_settings.h"
+
+namespace manyworlds {
+
+using Float3 = std::array<float, 3>;
+using Quaternion = std::array<float, 4>;  // (x, y, z, w), w the real part
+
+inline constexpr float kPi = 3.14159265358979323846f;
+
+// Jolt's EAllowedDOFs (spec 4.3): which world-axis translations and rotations a
+// body may make, as bit flags. A disallowed translation axis is zeroed in every
+// linear velocity write and position step; a disallowed rotation axis in the
+// rows and columns of the world inverse inertia (so no impulse, torque or
+// position correction turns the body about it). No translation at all makes
+// the inverse mass 0, no rotation the inverse inertia. A dynamic body must allow
+// at least one DOF (Jolt asserts it; a Batch refuses it).
+enum class AllowedDofs : std::uint8_t {
+  kNone = 0,  // refused for a dynamic body
+  kTranslationX = 1,
+  kTranslationY = 2,
+  kTranslationZ = 4,
+  kRotationX = 8,
+  kRotationY = 16,
+  kRotationZ = 32,
+  kAll = 63,
+  kPlane2D = kTranslationX | kTranslationY | kRotationZ,  // moves in the XY plane only
+};
+
+constexpr AllowedDofs operator|(AllowedDofs a, AllowedDofs b) {
+  return static_cast<AllowedDofs>(static_cast<std::uint8_t>(a) | static_cast<std::uint8_t>(b));
+}
+constexpr AllowedDofs operator&(AllowedDofs a, AllowedDofs b) {
+  return static_cast<AllowedDofs>(static_cast<std::uint8_t>(a) & static_cast<std::uint8_t>(b));
+}
+
+struct BodySettings {
+  std::string name;  // used in error messages and the printed plan
+  MotionType motion_type = MotionType::kDynamic;
+  float mass = 1.0f;                  // kg; dynamic bodies only
+  Float3 inertia_diagonal{1, 1, 1};   // principal moments (kg m^2), body frame
+  Quaternion inertia_rotation{0, 0, 0, 1};  // principal axes in the body frame
+  Float3 position{0, 0, 0};           // centre of mass, world
+  Quaternion rotation{0, 0, 0, 1};
+  Float3 linear_velocity{0, 0, 0};
+  Float3 angular_velocity{0, 0, 0};
+  float linear_damping = 0.05f;   // 1/s: v *= max(0, 1 - c dt) each step
+  float angular_damping = 0.05f;
+  float max_linear_velocity = 500.0f;                // m/s
+  float max_angular_velocity = 0.25f * kPi * 60.0f;  // rad/s
+  float gravity_factor = 1.0f;
+  AllowedDofs allowed_dofs = AllowedDofs::kAll;  // world axes; see AllowedDofs
+};
+
+// How the points and axes of a constraint's settings are given.
+enum class ConstraintSpace : std::uint8_t {
+  kWorldSpace,      // in world space at the scene's initial poses (Jolt's default)
+  kLocalToBodyCOM,  // relative to each body's centre of mass, in body space
+};
+
+// Ball joint: body 1's point1 and body 2's point2 coincide (spec 3, Point).
+struct PointConstraintSettings {
+  std::string name;
+  std::size_t body1 = 0, body2 = 0;
+  ConstraintSpace space = ConstraintSpace::kWorldSpace;
+  Float3 point1{0, 0, 0};
+  Float3 point2{0, 0, 0};
+};
+
+// Welds two bodies: relative rotation and the anchor fixed. auto_detect_point
+// puts the anchor at the inverse-mass-weighted average of the two centres of
+// mass (world space only).
+struct FixedConstraintSettings {
+  std::string name;
+  std::size_t body1 = 0, body2 = 0;
+  ConstraintSpace space = ConstraintSpace::kWorldSpace;
+  bool auto_detect_point = false;
+  Float3 point1{0, 0, 0};
+  Float3 axis_x1{1, 0, 0};
+  Float3 axis_y1{0, 1, 0};
+  Float3 point2{0, 0, 0};
+  Float3 axis_x2{1, 0, 0};
+  Float3 axis_y2{0, 1, 0};
+};
+
+// One rotational degree of freedom about the hinge axis, angle measured from
+// the normal axes. Limits within [-pi, 0] and [0, pi]; [-pi, pi] means none.
+struct HingeConstraintSettings {
+  std::string name;
+  std::size_t body1 = 0, body2 = 0;
+  ConstraintSpace space = ConstraintSpace::kWorldSpace;
+  Float3 point1{0, 0, 0};
+  Float3 hinge_axis1{0, 1, 0};
+  Float3 normal_axis1{1, 0, 0};
+  Float3 point2{0, 0, 0};
+  Float3 hinge_axis2{0, 1, 0};
+  Float3 normal_axis2{1, 0, 0};
+  float limits_min = -kPi;
+  float limits_max = kPi;
+  SpringSettings limits_spring;      // frequency_or_stiffness <= 0: hard limits
+  float max_friction_torque = 0.0f;  // N m, when the motor is off
+  MotorSettings motor;               // force limits are torque limits here
+  MotorState motor_state = MotorState::kOff;
+  float target_angular_velocity = 0.0f;  // rad/s, body 2 relative to body 1
+  float target_angle = 0.0f;             // rad, clamped into the limits
+};
+
+// One translational degree of freedom along the slider axis; rotation fixed.
+struct SliderConstraintSettings {
+  std::string name;
+  std::size_t body1 = 0, body2 = 0;
+  ConstraintSpace space = ConstraintSpace::kWorldSpace;
+  bool auto_detect_point = false;
+  Float3 point1{0, 0, 0};
+  Float3 slider_axis1{1, 0, 0};
+  Float3 normal_axis1{0, 1, 0};
+  Float3 point2{0, 0, 0};
+  Float3 slider_axis2{1, 0, 0};
+  Float3 normal_axis2{0, 1, 0};
+  float limits_min = -FLT_MAX;  // m, <= 0
+  float limits_max = FLT_MAX;   // m, >= 0
+  SpringSettings limits_spring;
+  float max_friction_force = 0.0f;  // N, when the motor is off
+  MotorSettings motor;
+  MotorState motor_state = MotorState::kOff;
+  float target_velocity = 0.0f;  // m/s
+  float target_position = 0.0f;  // m, clamped into the limits
+};
+
+// No constraint index: the gear / rack has no position correction.
+inline constexpr std::size_t kNoConstraint = static_cast<std::size_t>(-1);
+
+// Couples the rotations of two hinged bodies: theta1 + ratio theta2 = 0
+// (ratio = teeth2 / teeth1). Position correction needs both hinges.
+struct GearConstraintSettings {
+  std::string name;
+  std::size_t body1 = 0, body2 = 0;
+  ConstraintSpace space = ConstraintSpace::kWorldSpace;
+  Float3 hinge_axis1{1, 0, 0};
+  Float3 hinge_axis2{1, 0, 0};
+  float ratio = 1.0f;
+  std::size_t hinge1 = kNoConstraint;  // the hinge constraints of body 1 and 2
+  std::size_t hinge2 = kNoConstraint;
+};
+
+// Couples a pinion's rotation (body 1) to a rack's translation (body 2):
+// theta - ratio d = 0, ratio in rad/m. Position correction needs both helpers.
+struct RackAndPinionConstraintSettings {
+  std::string name;
+  std::size_t body1 = 0, body2 = 0;
+  ConstraintSpace space = ConstraintSpace::kWorldSpace;
+  Float3 hinge_axis1{1, 0, 0};
+  Float3 slider_axis2{1, 0, 0};
+  float ratio = 1.0f;
+  std::size_t hinge = kNoConstraint;   // the pinion's hinge
+  std::size_t slider = kNoConstraint;  // the rack's slider
+};
+
+using ConstraintSettings =
+    std::variant<PointConstraintSettings, FixedConstraintSettings, HingeConstraintSettings,
+                 SliderConstraintSettings, GearConstraintSettings,
+                 RackAndPinionConstraintSettings>;
+
+// The world every batch copies. Constraints are solved in the order they were
+// added (Jolt's order for equal priorities).
+class Scene {
+ public:
+  std::size_t AddBody(BodySettings body) {
+    bodies_.push_back(std::move(body));
+    return bodies_.size() - 1;
+  }
+  std::size_t AddConstraint(ConstraintSettings constraint) {
+    constraints_.push_back(std::move(constraint));
+    return constraints_.size() - 1;
+  }
+
+  const std::vector<BodySettings>& bodies() const { return bodies_; }
+  const std::vector<ConstraintSettings>& constraints() const { return constraints_; }
+  std::vector<BodySettings>& bodies() { return bodies_; }
+  std::vector<ConstraintSettings>& constraints() { return constraints_; }
+
+ private:
+  std::vector<BodySettings> bodies_;
+  std::vector<ConstraintSettings> constraints_;
+};
+
+// A name for messages: the constraint's name if given, else "<type> #index".
+std::string ConstraintLabel(const Scene& scene, std::size_t index);
+std::string BodyLabel(const Scene& scene, std::size_t index);
+
+}  // namespace manyworlds

@@ -1,0 +1,108 @@
+// The reference scenes of the project's benchmarks and accuracy reports
+// (docs/scenes.md), built exactly as the brief's scenes-and-metrics spec
+// describes them, and their per-step actions.
+//
+//   Scene scene = MakeReferenceScene("cartpole");
+//   Batch batch(scene, 4096);
+//   const SceneActions actions("cartpole");
+//   for (std::uint64_t step = 0; step < 1000; ++step) {
+//     actions.Apply(batch, step, /*seed=*/1);  // a random force on every cart
+//     batch.Step(StepSettings{});              // gravity, dt, iterations: spec defaults
+//   }
+//
+// Units SI. Gravity, dt and iterations are step settings (StepSettings{} holds
+// the spec's defaults); every body has damping 0 and Jolt's other defaults.
+// An action depends only on (seed, world, step), never on the batch size,
+// the thread count or the order in which worlds are visited, so a world of a
+// batch and the same world stepped alone by the scalar reference see the
+// same forces.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <vector>
+
+#include "manyworlds/batch.h"
+#include "manyworlds/scene.h"
+
+namespace manyworlds {
+
+// cartpole, chain16, chain16-r100, chain16-r1000, chain64, rackpinion,
+// geartrain, in that order.
+std::vector<std::string> ReferenceSceneIds();
+
+// The scene `id` (one of ReferenceSceneIds()). Throws std::invalid_argument
+// naming the unknown id and listing the valid ones.
+Scene MakeReferenceScene(std::string_view id);
+
+// A force (N, world space, through the centre of mass) on one body of one
+// world, acting during the next step.
+struct BodyForce {
+  std::size_t body = 0;
+  Float3 force{0, 0, 0};
+};
+
+// The action of a reference scene each step. cartpole: a force on the cart
+// along X, uniform in [-10, 10) N, drawn per (seed, world, step) by a
+// splitmix64 hash. Every other scene: no action.
+class SceneActions {
+ public:
+  // Throws std::invalid_argument for an unknown id, as MakeReferenceScene.
+  explicit SceneActions(std::string_view id);
+
+  bool empty() const { return forces_per_world_ == 0; }
+  std::size_t forces_per_world() const { return forces_per_world_; }
+
+  // The i-th force (i < forces_per_world()) of world `world` at `step`.
+  BodyForce Force(std::size_t i, std::uint64_t world, std::uint64_t step,
+                  std::uint64_t seed) const;
+
+  // Sets the forces of every world of the batch for its next Step.
+  void Apply(Batch& batch, std::uint64_t step, std::uint64_t seed) const;
+
+  // The same forces for world `world_index`, given to one world of a scalar
+  // stepper with SetForce(body, Vec3) and body(i).position of that Vec3 type
+  // (reference::World<float> or <double>).
+  template <class World>
+  void ApplyTo(World& world, std::uint64_t world_index, std::uint64_t step,
+               std::uint64_t seed) const {
+    using Vec = std::decay_t<decltype(world.body(0).position)>;
+    using Scalar = typename Vec::Scalar;
+    for (std::size_t i = 0; i < forces_per_world_; ++i) {
+      const BodyForce f = Force(i, world_index, step, seed);
+      world.SetForce(f.body, Vec(Scalar(f.force[0]), Scalar(f.force[1]), Scalar(f.force[2])));
+    }
+  }
+
+ private:
+  std::size_t forces_per_world_ = 0;
+  std::size_t body_ = 0;
+};
+
+// SceneActions(id).Apply(batch, step, seed).
+void ApplyReferenceActions(std::string_view id, Batch& batch, std::uint64_t step,
+                           std::uint64_t seed);
+
+// The cartpole's cart force along X (N) of world `world` at `step`: uniform in
+// [-10, 10), a function of (seed, world, step) only.
+float CartpoleForce(std::uint64_t seed, std::uint64_t world, std::uint64_t step);
+
+// Body and constraint indices of the reference scenes, for tests and tools.
+namespace reference_scene {
+inline constexpr std::size_t kWorld = 0;  // the static world body of every scene
+// cartpole
+inline constexpr std::size_t kCart = 1, kPole = 2;
+inline constexpr std::size_t kRail = 0, kPoleHinge = 1;
+// chain*: link i is body i + 1; constraint i joins body i and body i + 1.
+// rackpinion
+inline constexpr std::size_t kPinion = 1, kRack = 2;
+inline constexpr std::size_t kPinionHinge = 0, kRackSlider = 1, kRackAndPinion = 2;
+// geartrain
+inline constexpr std::size_t kGear1 = 1, kGear2 = 2;
+inline constexpr std::size_t kGear1Hinge = 0, kGear2Hinge = 1, kGear = 2;
+}  // namespace reference_scene
+
+}  // namespace manyworlds

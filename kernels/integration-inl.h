@@ -1,0 +1,93 @@
+// Body integration across worlds: the first and the integration stage of
+// Jolt's step (spec 4.1, steps 1 and 6).
+//
+// Forces (dynamic bodies, once per substep, before the constraints):
+//   v <- lockT(v + dt (gravity_factor g + m^-1 F))
+//   w <- w + dt I^-1 tau                     (inertia at the current rotation,
+//                                             locked rotation axes masked)
+//   v <- v max(0, 1 - c_lin dt),  w <- w max(0, 1 - c_ang dt)
+//   |v| <= v_max, |w| <= w_max               (uniform rescale when exceeded)
+// Integration (after the velocity iterations):
+//   dynamic bodies clamp |v|, |w| again; then q <- AddRotationStep(w dt)
+//   (exact axis-angle, normalised, skipped below 1e-6 rad) and
+//   x <- x + lockT(v dt) (symplectic Euler: new velocity, rotation before
+//   translation). Kinematic bodies integrate the same way without clamps;
+//   static bodies never move. lockT zeroes the locked translation axes of a
+//   body with allowed DOFs (spec 4.3); see body_access-inl.h.
+
+#if defined(MANYWORLDS_KERNELS_INTEGRATION_INL_H_) == defined(HWY_TARGET_TOGGLE)
+#ifdef MANYWORLDS_KERNELS_INTEGRATION_INL_H_
+#undef MANYWORLDS_KERNELS_INTEGRATION_INL_H_
+#else
+#define MANYWORLDS_KERNELS_INTEGRATION_INL_H_
+#endif
+
+#include <cstddef>
+
+#include "kernels/body_access-inl.h"
+#include "kernels/body_lanes.h"
+#include "kernels/lane_math-inl.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace manyworlds {
+namespace HWY_NAMESPACE {
+
+// Jolt's ClampLinear/AngularVelocity: v *= max / |v| where |v|^2 > max^2.
+HWY_INLINE Vec3 ClampLength(const Vec3& v, LaneVec max_length) {
+  const LaneVec length_squared = LengthSquared(v);
+  const LaneMask too_fast = hn::Gt(length_squared, hn::Mul(max_length, max_length));
+  const LaneVec scale = hn::Div(max_length, hn::Sqrt(length_squared));
+  return Select(too_fast, Scale(v, scale), v);
+}
+
+// Step 1 for one dynamic body of a block; clears the force and torque after
+// use only at the end of the whole step (the caller), as they act in every
+// substep.
+HWY_INLINE void ApplyForcesAndDamping(BodyLanes& body, const BodyMotionLanes& motion,
+                                      const Vec3& gravity, LaneVec delta_time) {
+  ForEachChunk([&](std::size_t offset) {
+    const LaneVec inv_mass = Load(body.inv_mass, offset);
+    const LaneVec gravity_factor = Load(motion.gravity_factor, offset);
+    const Vec3 acceleration =
+        MulAdd(LoadVec3(motion.force, offset), inv_mass, Scale(gravity, gravity_factor));
+    Vec3 linear = LockTranslation(
+        body, MulAdd(acceleration, delta_time, LoadVec3(body.linear_velocity, offset)), offset);
+    Vec3 angular =
+        MulAdd(BodyInverseInertiaTimes(body, LoadVec3(motion.torque, offset), offset),
+               delta_time, LoadVec3(body.angular_velocity, offset));
+    const LaneVec one = Splat(1.0f);
+    const LaneVec linear_keep =
+        hn::Max(Zero(), hn::NegMulAdd(Load(motion.linear_damping, offset), delta_time, one));
+    const LaneVec angular_keep =
+        hn::Max(Zero(), hn::NegMulAdd(Load(motion.angular_damping, offset), delta_time, one));
+    linear = ClampLength(Scale(linear, linear_keep), Load(motion.max_linear_velocity, offset));
+    angular =
+        ClampLength(Scale(angular, angular_keep), Load(motion.max_angular_velocity, offset));
+    StoreVec3(linear, body.linear_velocity, offset);
+    StoreVec3(angular, body.angular_velocity, offset);
+  });
+}
+
+// Step 6 for one body of a block. `motion` is null for kinematic bodies (no
+// clamps); static bodies are not integrated at all.
+HWY_INLINE void IntegrateBody(BodyLanes& body, const BodyMotionLanes* motion,
+                              LaneVec delta_time) {
+  ForEachChunk([&](std::size_t offset) {
+    Vec3 linear = LoadVec3(body.linear_velocity, offset);
+    Vec3 angular = LoadVec3(body.angular_velocity, offset);
+    if (motion != nullptr) {
+      linear = ClampLength(linear, Load(motion->max_linear_velocity, offset));
+      angular = ClampLength(angular, Load(motion->max_angular_velocity, offset));
+      StoreVec3(linear, body.linear_velocity, offset);
+      StoreVec3(angular, body.angular_velocity, offset);
+    }
+    AddRotationStep(body, Scale(angular, delta_time), offset);
+    AddPositionStep(body, Scale(linear, delta_time), offset);
+  });
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace manyworlds
+HWY_AFTER_NAMESPACE();
+
+#endif  // MANYWORLDS_KERNELS_INTEGRATION_INL_H_
