@@ -1,0 +1,334 @@
+// The scalar reference stepper: ONE world of a manyworlds::Scene, stepped exactly
+// as Jolt's PhysicsSystem::Update steps a constraint-only island (spec 4.1). It is
+// the oracle the SIMD batch is checked against, so it favours plain, readable
+// code over speed.
+//
+// One Step(settings) with n = settings.substeps:
+//
+//   dt    = delta_time / n
+//   ratio = dt / dt_prev of the previous Step (0 on the very first Step, 0 when
+//           warm_start is off); only the first sub-step uses it, later sub-steps
+//           use 1 (spec 4.1). dt_prev := dt.
+//   n times:
+//     1. dynamic bodies:  v ← lockT(v + dt·(g_factor·g + m⁻¹F)),  ω ← ω + dt·I⁻¹τ,
+//                         v ← v·max(0, 1 − c_lin·dt),  ω ← ω·max(0, 1 − c_ang·dt),
+//                         clamp |v| ≤ v_max, |ω| ≤ ω_max (uniform rescale)
+//     2. constraints with at least one dynamic body (Jolt solves no others), in
+//        scene order: Setup (poses at the start of the sub-step)
+//     3. WarmStart(ratio) of each
+//     4. up to N_v velocity iterations over all of them; stop after an iteration
+//        in which no part applied an impulse (result-neutral, spec 1.1)
+//     5. integrate: dynamic bodies clamp v, ω again; every non-static body
+//        q ← AddRotationStep(ω·dt) (rotation first), then x ← x + lockT(v·dt)
+//     6. up to N_p position iterations (Baumgarte β), stop when nothing moved
+//   forces and torques set for this Step are then cleared (Jolt's AddForce: they
+//   act in every sub-step of the Step they were set for).
+//
+// Allowed DOFs (spec 4.3): lockT zeroes a body's locked translation axes, here
+// and in every linear velocity or position step of the parts; I⁻¹ has the rows
+// and columns of locked rotation axes zeroed (reference/body.h).
+//
+// The constraint types and what each solves are in reference/*_constraint.h; the
+// scene conversion (mass, inertia, world-space settings to body space, anchors,
+// r0⁻¹) in reference/world_setup.h.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <variant>
+#include <vector>
+
+#include "manyworlds/batch.h"
+#include "manyworlds/scene.h"
+#include "reference/body.h"
+#include "reference/fixed_constraint.h"
+#include "reference/gear_constraint.h"
+#include "reference/hinge_constraint.h"
+#include "reference/math.h"
+#include "reference/point_constraint.h"
+#include "reference/rack_and_pinion_constraint.h"
+#include "reference/slider_constraint.h"
+#include "reference/world_setup.h"
+
+namespace manyworlds::reference {
+
+template <class T>
+class World {
+ public:
+  // Same order as manyworlds::ConstraintSettings.
+  using Constraint =
+      std::variant<PointConstraint<T>, FixedConstraint<T>, HingeConstraint<T>,
+                   SliderConstraint<T>, GearConstraint<T>, RackAndPinionConstraint<T>>;
+
+  // Converts every body and constraint (world-space settings refer to the poses
+  // in the scene). Throws std::invalid_argument for body or helper indices that do
+  // not fit, and for a gear or rack-and-pinion with a static body.
+  explicit World(const Scene& scene) {
+    for (const BodySettings& settings : scene.bodies()) {
+      bodies_.push_back(MakeBody<T>(settings));
+      motion_.push_back(MakeBodyMotionSettings<T>(settings));
+    }
+    const auto& constraints = scene.constraints();
+    for (std::size_t index = 0; index < constraints.size(); ++index) {
+      constraints_.push_back(std::visit(
+          [&](const auto& settings) { return MakeConstraint(settings, index); },
+          constraints[index]));
+    }
+    for (std::size_t index = 0; index < constraints_.size(); ++index) CheckHelpers(index);
+  }
+
+  // One step of settings.delta_time (see the header comment).
+  void Step(const StepSettings& settings) {
+    if (!(settings.delta_time > 0.0f) || settings.substeps < 1 ||
+        settings.velocity_iterations < 0 || settings.position_iterations < 0) {
+      throw std::invalid_argument("reference::World::Step: invalid step settings");
+    }
+    const T step_dt = T(settings.delta_time) / T(settings.substeps);
+    const T first_ratio = settings.warm_start && previous_step_dt_ > T(0)
+                              ? step_dt / previous_step_dt_
+                              : T(0);
+    previous_step_dt_ = step_dt;
+    for (int substep = 0; substep < settings.substeps; ++substep) {
+      StepOnce(settings, step_dt, substep == 0 ? first_ratio : T(1));
+    }
+    for (BodyMotionSettings<T>& motion : motion_) {
+      motion.force.setZero();
+      motion.torque.setZero();
+    }
+  }
+
+  // ---- actions: world-space force / torque through the COM for the next Step.
+  void SetForce(std::size_t body, const Vec3<T>& force) { motion_.at(body).force = force; }
+  void SetTorque(std::size_t body, const Vec3<T>& torque) { motion_.at(body).torque = torque; }
+
+  // Hinge: rad/s; slider: m/s.
+  void SetTargetVelocity(std::size_t constraint, T velocity) {
+    if (auto* hinge = std::get_if<HingeConstraint<T>>(&constraints_.at(constraint))) {
+      hinge->SetTargetAngularVelocity(velocity);
+    } else if (auto* slider = std::get_if<SliderConstraint<T>>(&constraints_.at(constraint))) {
+      slider->SetTargetVelocity(velocity);
+    } else {
+      throw std::invalid_argument(NotA("hinge or slider", constraint));
+    }
+  }
+  // Hinge: rad; slider: m. Clamped into the limits (spec 3).
+  void SetTargetPosition(std::size_t constraint, T position) {
+    if (auto* hinge = std::get_if<HingeConstraint<T>>(&constraints_.at(constraint))) {
+      hinge->SetTargetAngle(position);
+    } else if (auto* slider = std::get_if<SliderConstraint<T>>(&constraints_.at(constraint))) {
+      slider->SetTargetPosition(position);
+    } else {
+      throw std::invalid_argument(NotA("hinge or slider", constraint));
+    }
+  }
+
+  // ---- state
+  const Body<T>& body(std::size_t i) const { return bodies_.at(i); }
+  Body<T>& body(std::size_t i) { return bodies_.at(i); }  // to set state
+  std::size_t body_count() const { return bodies_.size(); }
+  std::size_t constraint_count() const { return constraints_.size(); }
+  const Constraint& constraint(std::size_t i) const { return constraints_.at(i); }
+
+  // The hinge's current angle (body 2 relative to body 1, in (−π, π]) and the
+  // slider's current position, from the bodies as they are now.
+  T HingeAngle(std::size_t constraint) const {
+    const auto* hinge = std::get_if<HingeConstraint<T>>(&constraints_.at(constraint));
+    if (hinge == nullptr) throw std::invalid_argument(NotA("hinge", constraint));
+    return hinge->CurrentAngle(bodies_[hinge->body1()], bodies_[hinge->body2()]);
+  }
+  T SliderPosition(std::size_t constraint) const {
+    const auto* slider = std::get_if<SliderConstraint<T>>(&constraints_.at(constraint));
+    if (slider == nullptr) throw std::invalid_argument(NotA("slider", constraint));
+    return slider->CurrentPosition(bodies_[slider->body1()], bodies_[slider->body2()]);
+  }
+
+ private:
+  static std::string NotA(const char* what, std::size_t constraint) {
+    return "reference::World: constraint " + std::to_string(constraint) + " is not a " + what;
+  }
+
+  template <class Settings>
+  Constraint MakeConstraint(const Settings& settings, std::size_t index) const {
+    CheckBodyIndices(settings.body1, settings.body2, bodies_.size(), index);
+    const Body<T>& body1 = bodies_[settings.body1];
+    const Body<T>& body2 = bodies_[settings.body2];
+    if constexpr (std::is_same_v<Settings, PointConstraintSettings>) {
+      return PointConstraint<T>(settings, body1, body2);
+    } else if constexpr (std::is_same_v<Settings, FixedConstraintSettings>) {
+      return FixedConstraint<T>(settings, body1, body2);
+    } else if constexpr (std::is_same_v<Settings, HingeConstraintSettings>) {
+      return HingeConstraint<T>(settings, body1, body2);
+    } else if constexpr (std::is_same_v<Settings, SliderConstraintSettings>) {
+      return SliderConstraint<T>(settings, body1, body2);
+    } else {
+      // Gear and rack-and-pinion read both bodies' motion properties (spec 1.5).
+      if (body1.IsStatic() || body2.IsStatic()) {
+        throw std::invalid_argument("reference::World: constraint " + std::to_string(index) +
+                                    " (gear or rack-and-pinion) has a static body");
+      }
+      if constexpr (std::is_same_v<Settings, GearConstraintSettings>) {
+        return GearConstraint<T>(settings, body1, body2);
+      } else {
+        static_assert(std::is_same_v<Settings, RackAndPinionConstraintSettings>);
+        return RackAndPinionConstraint<T>(settings, body1, body2);
+      }
+    }
+  }
+
+  // A helper (gear's hinges, rack-and-pinion's hinge and slider) must be of the
+  // right type and hold the body it measures.
+  template <class Helper>
+  void CheckHelper(std::size_t helper, std::size_t body, std::size_t index) const {
+    if (helper == kNoConstraint) return;
+    const Helper* c = helper < constraints_.size() ? std::get_if<Helper>(&constraints_[helper])
+                                                   : nullptr;
+    if (c == nullptr || (c->body1() != body && c->body2() != body)) {
+      throw std::invalid_argument("reference::World: constraint " + std::to_string(index) +
+                                  " names helper constraint " + std::to_string(helper) +
+                                  " which is not of the right type or lacks its body");
+    }
+  }
+
+  void CheckHelpers(std::size_t index) const {
+    if (const auto* gear = std::get_if<GearConstraint<T>>(&constraints_[index])) {
+      CheckHelper<HingeConstraint<T>>(gear->hinge1(), gear->body1(), index);
+      CheckHelper<HingeConstraint<T>>(gear->hinge2(), gear->body2(), index);
+    } else if (const auto* rack =
+                   std::get_if<RackAndPinionConstraint<T>>(&constraints_[index])) {
+      CheckHelper<HingeConstraint<T>>(rack->hinge(), rack->body1(), index);
+      CheckHelper<SliderConstraint<T>>(rack->slider(), rack->body2(), index);
+    }
+  }
+
+  // The rotation of `body` as hinge `hinge` measures it: the hinge angle is body 2
+  // relative to body 1, so a body that is the hinge's body 1 turned the other way.
+  T RotationMeasuredByHinge(std::size_t hinge, std::size_t body) const {
+    const T angle = HingeAngle(hinge);
+    return std::get<HingeConstraint<T>>(constraints_[hinge]).body2() == body ? angle : -angle;
+  }
+  // Likewise the translation of `body` as slider `slider` measures it.
+  T TranslationMeasuredBySlider(std::size_t slider, std::size_t body) const {
+    const T position = SliderPosition(slider);
+    return std::get<SliderConstraint<T>>(constraints_[slider]).body2() == body ? position
+                                                                               : -position;
+  }
+
+  // Jolt solves a constraint only if at least one of its bodies is dynamic (spec 1.5).
+  bool IsSolved(const Constraint& constraint) const {
+    return std::visit(
+        [&](const auto& c) {
+          return bodies_[c.body1()].IsDynamic() || bodies_[c.body2()].IsDynamic();
+        },
+        constraint);
+  }
+
+  static void ClampVelocities(Body<T>& body, const BodyMotionSettings<T>& motion) {
+    const auto clamp = [](Vec3<T>& v, T max_length) {
+      const T length_squared = v.squaredNorm();
+      if (length_squared > max_length * max_length) v *= max_length / std::sqrt(length_squared);
+    };
+    clamp(body.linear_velocity, motion.max_linear_velocity);
+    clamp(body.angular_velocity, motion.max_angular_velocity);
+  }
+
+  // Step 1: gravity, forces, damping, clamps (dynamic bodies).
+  void ApplyForcesAndDamping(T dt, const Vec3<T>& gravity) {
+    for (std::size_t i = 0; i < bodies_.size(); ++i) {
+      Body<T>& body = bodies_[i];
+      if (!body.IsDynamic()) continue;
+      const BodyMotionSettings<T>& motion = motion_[i];
+      body.AddLinearVelocityStep(dt *
+                                 (motion.gravity_factor * gravity + body.inv_mass * motion.force));
+      body.angular_velocity += dt * body.MultiplyInverseInertia(motion.torque);
+      body.linear_velocity *= std::max(T(0), T(1) - motion.linear_damping * dt);
+      body.angular_velocity *= std::max(T(0), T(1) - motion.angular_damping * dt);
+      ClampVelocities(body, motion);
+    }
+  }
+
+  // Step 5: symplectic Euler with the solved velocities, rotation first.
+  void Integrate(T dt) {
+    for (std::size_t i = 0; i < bodies_.size(); ++i) {
+      Body<T>& body = bodies_[i];
+      if (body.IsStatic()) continue;
+      if (body.IsDynamic()) ClampVelocities(body, motion_[i]);
+      body.AddRotationStep(body.angular_velocity * dt);
+      body.AddPositionStep(body.linear_velocity * dt);  // x ← x + lockT(v·dt)
+    }
+  }
+
+  bool SolvePosition(Constraint& constraint, T dt, T baumgarte) {
+    return std::visit(
+        [&](auto& c) -> bool {
+          using Type = std::decay_t<decltype(c)>;
+          Body<T>& body1 = bodies_[c.body1()];
+          Body<T>& body2 = bodies_[c.body2()];
+          if constexpr (std::is_same_v<Type, GearConstraint<T>>) {
+            if (!c.HasPositionCorrection()) return false;
+            // Measured now, after the constraints before this one moved the bodies.
+            return c.SolvePositionConstraint(body1, body2,
+                                             RotationMeasuredByHinge(c.hinge1(), c.body1()),
+                                             RotationMeasuredByHinge(c.hinge2(), c.body2()),
+                                             baumgarte);
+          } else if constexpr (std::is_same_v<Type, RackAndPinionConstraint<T>>) {
+            if (!c.HasPositionCorrection()) return false;
+            return c.SolvePositionConstraint(body1, body2,
+                                             RotationMeasuredByHinge(c.hinge(), c.body1()),
+                                             TranslationMeasuredBySlider(c.slider(), c.body2()),
+                                             baumgarte);
+          } else {
+            return c.SolvePositionConstraint(body1, body2, dt, baumgarte);
+          }
+        },
+        constraint);
+  }
+
+  void StepOnce(const StepSettings& settings, T dt, T warm_start_ratio) {
+    ApplyForcesAndDamping(dt, ToVec3<T>(settings.gravity));
+
+    std::vector<Constraint*> solved;
+    for (Constraint& constraint : constraints_) {
+      if (IsSolved(constraint)) solved.push_back(&constraint);
+    }
+    const auto for_each_solved = [&](auto&& action) {
+      for (Constraint* constraint : solved) {
+        std::visit([&](auto& c) { action(c, bodies_[c.body1()], bodies_[c.body2()]); },
+                   *constraint);
+      }
+    };
+
+    for_each_solved([&](auto& c, Body<T>& body1, Body<T>& body2) {
+      c.SetupVelocityConstraint(body1, body2, dt);
+    });
+    for_each_solved([&](auto& c, Body<T>& body1, Body<T>& body2) {
+      c.WarmStartVelocityConstraint(body1, body2, warm_start_ratio);
+    });
+    for (int iteration = 0; iteration < settings.velocity_iterations; ++iteration) {
+      bool applied = false;
+      for_each_solved([&](auto& c, Body<T>& body1, Body<T>& body2) {
+        applied |= c.SolveVelocityConstraint(body1, body2, dt);
+      });
+      if (!applied) break;
+    }
+
+    Integrate(dt);
+
+    const T baumgarte = T(settings.baumgarte);
+    for (int iteration = 0; iteration < settings.position_iterations; ++iteration) {
+      bool moved = false;
+      for (Constraint* constraint : solved) moved |= SolvePosition(*constraint, dt, baumgarte);
+      if (!moved) break;
+    }
+  }
+
+  std::vector<Body<T>> bodies_;
+  std::vector<BodyMotionSettings<T>> motion_;
+  std::vector<Constraint> constraints_;
+  T previous_step_dt_ = T(0);  // Jolt's mPreviousStepDeltaTime (warm-start ratio)
+};
+
+}  // namespace manyworlds::reference
