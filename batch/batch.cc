@@ -105,9 +105,11 @@ class Batch::Impl {
         blocks_per_task_ > 0
             ? blocks_per_task_
             : std::max<std::size_t>(1, block_count_ / (static_cast<std::size_t>(threads_) * 4));
+    const bool reset_unhealthy = settings.unhealthy_worlds == UnhealthyWorlds::kReset;
     auto step_blocks = [&](const tbb::blocked_range<std::size_t>& range) {
       for (std::size_t block = range.begin(); block != range.end(); ++block) {
-        kernels_->step_block(plan_, Block(block), params);
+        const bool unhealthy = kernels_->step_block(plan_, Block(block), params);
+        RecordHealth(block, unhealthy, reset_unhealthy);
       }
     };
     if (threads_ == 1 || block_count_ == 1) {
@@ -118,6 +120,35 @@ class Batch::Impl {
       tbb::parallel_for(tbb::blocked_range<std::size_t>(0, block_count_, grain), step_blocks,
                         tbb::simple_partitioner());
     });
+  }
+
+  // Copies the block's health lanes of its real worlds, with the non-finite
+  // inputs noted since the last Step, into health_ and, if asked, resets the
+  // unhealthy worlds; runs in the block's task, while the block is in cache,
+  // and touches only this block's worlds.
+  void RecordHealth(std::size_t block, bool unhealthy, bool reset_unhealthy) {
+    const std::size_t first = block * kLaneWidth;
+    const std::size_t end = std::min(first + kLaneWidth, world_count_);
+    const auto& lanes = At<WorldHealthLanes>(Block(block), plan_.health_offset);
+    for (std::size_t world = first; world < end; ++world) {
+      std::uint8_t bits = pending_input_[world];
+      pending_input_[world] = 0;
+      if (unhealthy) {
+        const std::size_t l = Lane(world);
+        bits |= (lanes.non_finite[l] != 0.0f ? kNonFiniteState : 0) |
+                (lanes.velocity_overflow[l] != 0.0f ? kVelocityOverflow : 0) |
+                (lanes.out_of_range[l] != 0.0f ? kPositionOutOfRange : 0);
+      }
+      health_[world] = bits;
+      if (bits != 0 && reset_unhealthy) ResetWorld(world);
+    }
+  }
+
+  // Actions are not refused (RL loops write them every step): a non-finite
+  // one is noted and reported with the world's health after the next Step.
+  template <class... Values>
+  void NoteInput(std::size_t world, Values... values) {
+    if (!(std::isfinite(values) && ...)) pending_input_[world] = kNonFiniteInput;
   }
 
   // ---- lane access
@@ -179,23 +210,39 @@ class Batch::Impl {
     std::copy(std::begin(values), std::end(values), out);
   }
 
+  static double RotationNorm(const float* state) {
+    double norm = 0.0;
+    for (int i = 3; i < 7; ++i) norm += double(state[i]) * state[i];
+    return std::sqrt(norm);
+  }
+  // Refuses, before anything is written, a state array with a zero rotation
+  // in a selected world ([world][body][13]).
+  void CheckStates(std::span<const float> in, std::span<const std::uint8_t> mask) const {
+    const std::size_t bodies = plan_.bodies.size();
+    for (std::size_t world = 0; world < world_count_; ++world) {
+      if (!Selected(mask, world)) continue;
+      for (std::size_t body = 0; body < bodies; ++body) {
+        if (RotationNorm(in.data() + (world * bodies + body) * kStateFloatsPerBody) == 0.0) {
+          throw SceneError(plan_.bodies[body].label + " in world " + std::to_string(world) +
+                           ": rotation is zero (nothing was written)");
+        }
+      }
+    }
+  }
+
   void WriteState(std::size_t world, std::size_t body, const float* in) {
     BodyLanes& b = In<BodyLanes>(world, plan_.bodies[body].offset);
     const std::size_t l = Lane(world);
     b.position.x[l] = in[0];
     b.position.y[l] = in[1];
     b.position.z[l] = in[2];
-    double norm = 0.0;
-    for (int i = 3; i < 7; ++i) norm += double(in[i]) * in[i];
-    norm = std::sqrt(norm);
-    if (!(norm > 0.0) || !std::isfinite(norm)) {
-      throw SceneError(plan_.bodies[body].label + " in world " + std::to_string(world) +
-                       ": rotation is zero or not finite");
-    }
-    b.rotation.x[l] = static_cast<float>(in[3] / norm);
-    b.rotation.y[l] = static_cast<float>(in[4] / norm);
-    b.rotation.z[l] = static_cast<float>(in[5] / norm);
-    b.rotation.w[l] = static_cast<float>(in[6] / norm);
+    // Non-finite rotations are written as given: the next Step flags the world.
+    const double norm = RotationNorm(in);
+    const double scale = std::isfinite(norm) ? 1.0 / norm : 1.0;
+    b.rotation.x[l] = static_cast<float>(in[3] * scale);
+    b.rotation.y[l] = static_cast<float>(in[4] * scale);
+    b.rotation.z[l] = static_cast<float>(in[5] * scale);
+    b.rotation.w[l] = static_cast<float>(in[6] * scale);
     const bool moves = plan_.bodies[body].motion != MotionType::kStatic;
     b.linear_velocity.x[l] = moves ? in[7] : 0.0f;
     b.linear_velocity.y[l] = moves ? in[8] : 0.0f;
@@ -223,6 +270,7 @@ class Batch::Impl {
       v.x[l] = per_world[world * 3 + 0];
       v.y[l] = per_world[world * 3 + 1];
       v.z[l] = per_world[world * 3 + 2];
+      NoteInput(world, v.x[l], v.y[l], v.z[l]);
     }
   }
 
@@ -287,6 +335,8 @@ class Batch::Impl {
   tbb::task_arena arena_;
   std::size_t blocks_per_task_;
   float previous_substep_dt_ = 0.0f;  // Jolt's mPreviousStepDeltaTime (0: cold start)
+  std::vector<std::uint8_t> health_ = std::vector<std::uint8_t>(world_count_, 0);
+  std::vector<std::uint8_t> pending_input_ = std::vector<std::uint8_t>(world_count_, 0);
   StepSettings last_settings_{};
 };
 
@@ -307,6 +357,12 @@ void Batch::Step(const StepSettings& settings) {
   impl_->last_settings_ = settings;
 }
 
+std::span<const std::uint8_t> Batch::WorldHealth() const { return impl_->health_; }
+std::size_t Batch::UnhealthyWorldCount() const {
+  return static_cast<std::size_t>(std::count_if(impl_->health_.begin(), impl_->health_.end(),
+                                                [](std::uint8_t bits) { return bits != 0; }));
+}
+
 void Batch::GetState(std::span<float> out) const {
   const std::size_t bodies = body_count();
   impl_->CheckSize(out.size(), world_count() * bodies * kStateFloatsPerBody, "GetState");
@@ -321,6 +377,7 @@ void Batch::SetState(std::span<const float> in, std::span<const std::uint8_t> wo
   const std::size_t bodies = body_count();
   impl_->CheckSize(in.size(), world_count() * bodies * kStateFloatsPerBody, "SetState");
   if (!world_mask.empty()) impl_->CheckSize(world_mask.size(), world_count(), "SetState mask");
+  impl_->CheckStates(in, world_mask);
   for (std::size_t w = 0; w < world_count(); ++w) {
     if (!impl_->Selected(world_mask, w)) continue;
     for (std::size_t b = 0; b < bodies; ++b) {
@@ -344,6 +401,15 @@ void Batch::GetField(StateField field, std::span<float> out) const {
 void Batch::SetField(StateField field, std::span<const float> in) {
   const std::size_t bodies = body_count(), size = StateFieldSize(field);
   impl_->CheckSize(in.size(), world_count() * bodies * size, "SetField");
+  if (field == StateField::kRotation) {
+    for (std::size_t i = 0; i < world_count() * bodies; ++i) {
+      const float* q = in.data() + i * size;
+      if (q[0] == 0.0f && q[1] == 0.0f && q[2] == 0.0f && q[3] == 0.0f) {
+        throw SceneError(impl_->plan_.bodies[i % bodies].label + " in world " +
+                         std::to_string(i / bodies) + ": rotation is zero (nothing was written)");
+      }
+    }
+  }
   float state[kStateFloatsPerBody];
   for (std::size_t w = 0; w < world_count(); ++w) {
     for (std::size_t b = 0; b < bodies; ++b) {
@@ -357,11 +423,18 @@ void Batch::SetField(StateField field, std::span<const float> in) {
 void Batch::Reset(std::span<const std::uint8_t> world_mask) {
   impl_->CheckSize(world_mask.size(), world_count(), "Reset mask");
   for (std::size_t w = 0; w < world_count(); ++w) {
-    if (world_mask[w] != 0) impl_->ResetWorld(w);
+    if (world_mask[w] == 0) continue;
+    impl_->ResetWorld(w);
+    impl_->health_[w] = 0;
+    impl_->pending_input_[w] = 0;
   }
 }
 
 void Batch::ResetTo(std::span<const std::uint8_t> world_mask, std::span<const float> state) {
+  // Every check before the reset, so that a refused call changes nothing.
+  impl_->CheckSize(world_mask.size(), world_count(), "ResetTo mask");
+  impl_->CheckSize(state.size(), world_count() * body_count() * kStateFloatsPerBody, "ResetTo");
+  impl_->CheckStates(state, world_mask);
   Reset(world_mask);
   SetState(state, world_mask);
 }
@@ -372,6 +445,7 @@ void Batch::SetForce(std::size_t world, std::size_t body, Float3 force) {
   m.force.x[l] = force[0];
   m.force.y[l] = force[1];
   m.force.z[l] = force[2];
+  impl_->NoteInput(world, force[0], force[1], force[2]);
 }
 
 void Batch::SetTorque(std::size_t world, std::size_t body, Float3 torque) {
@@ -380,6 +454,7 @@ void Batch::SetTorque(std::size_t world, std::size_t body, Float3 torque) {
   m.torque.x[l] = torque[0];
   m.torque.y[l] = torque[1];
   m.torque.z[l] = torque[2];
+  impl_->NoteInput(world, torque[0], torque[1], torque[2]);
 }
 
 void Batch::SetForces(std::span<const float> forces) {
@@ -425,6 +500,7 @@ void Batch::SetTargetVelocity(std::size_t world, std::size_t constraint, float v
                          [&](auto& motor, const ConstraintPlan&) {
                            motor.target_velocity[Impl::Lane(world)] = velocity;
                          });
+  impl_->NoteInput(world, velocity);
 }
 
 void Batch::SetTargetPosition(std::size_t world, std::size_t constraint, float position) {
@@ -433,6 +509,7 @@ void Batch::SetTargetPosition(std::size_t world, std::size_t constraint, float p
                            motor.target_position[Impl::Lane(world)] =
                                impl_->ClampedTarget(world, c, position);
                          });
+  impl_->NoteInput(world, position);
 }
 
 void Batch::SetTargetVelocities(std::size_t constraint, std::span<const float> per_world) {

@@ -259,6 +259,7 @@ StepPlan CompilePlan(const Scene& scene) {
     plan.bodies.push_back(BodyPlan{BodyLabel(scene, i), body.motion_type,
                                    layout.Add<BodyLanes>()});
   }
+  plan.health_offset = layout.Add<WorldHealthLanes>();
   for (BodyPlan& body : plan.bodies) {
     if (body.motion == MotionType::kDynamic) {
       body.motion_offset = layout.Add<BodyMotionLanes>();

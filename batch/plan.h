@@ -74,6 +74,7 @@ struct BodyPlan {
 struct StepPlan {
   std::vector<BodyPlan> bodies;
   std::vector<ConstraintPlan> constraints;
+  std::size_t health_offset = 0;  // WorldHealthLanes in the block
   std::size_t block_bytes = 0;  // one block of kLaneWidth worlds
   bool any_dynamic = false;
 

@@ -7,7 +7,8 @@
 //     4. velocity iterations, until none of the block's worlds applied an impulse
 //     5. integration                                    (dynamic and kinematic)
 //     6. position iterations, until none moved
-//   forces and torques cleared.
+//   forces and torques cleared; the health of every world checked (non-finite
+//   state, velocity overflow in the force step, coordinates out of range).
 //
 // The early-outs are result-neutral (spec 7): a pass in which no lane applied
 // an impulse leaves every velocity unchanged, so the next pass would too.
@@ -81,7 +82,7 @@ inline bool SolveConstraintPosition(const StepPlan& plan, const ConstraintBlock&
   return false;
 }
 
-void StepBlock(const StepPlan& plan, std::byte* block, const StepParams& params) {
+bool StepBlock(const StepPlan& plan, std::byte* block, const StepParams& params) {
   const std::size_t constraint_count = plan.constraints.size();
   // ConstraintBlocks are cheap views; build them once per call.
   std::vector<ConstraintBlock> constraints;
@@ -92,6 +93,8 @@ void StepBlock(const StepPlan& plan, std::byte* block, const StepParams& params)
   const LaneVec dt = Splat(params.substep_delta_time);
   const Vec3 gravity{Splat(params.gravity[0]), Splat(params.gravity[1]),
                      Splat(params.gravity[2])};
+  WorldHealthLanes& health = At<WorldHealthLanes>(block, plan.health_offset);
+  health = WorldHealthLanes{};
 
   for (int substep = 0; substep < params.substeps; ++substep) {
     // Jolt: the dt ratio (0 without warm start) in the first substep only;
@@ -102,7 +105,8 @@ void StepBlock(const StepPlan& plan, std::byte* block, const StepParams& params)
     for (const BodyPlan& body : plan.bodies) {
       if (body.motion != MotionType::kDynamic) continue;
       ApplyForcesAndDamping(At<BodyLanes>(block, body.offset),
-                            At<BodyMotionLanes>(block, body.motion_offset), gravity, dt);
+                            At<BodyMotionLanes>(block, body.motion_offset), gravity, dt,
+                            health);
     }
 
     if (constraint_count != 0) {
@@ -142,6 +146,19 @@ void StepBlock(const StepPlan& plan, std::byte* block, const StepParams& params)
     motion.force = Vec3Lanes{};
     motion.torque = Vec3Lanes{};
   }
+
+  const LaneVec max_coordinate = Splat(kMaxHealthyCoordinate);
+  for (const BodyPlan& body : plan.bodies) {
+    CheckBodyHealth(At<BodyLanes>(block, body.offset), max_coordinate, health);
+  }
+  bool unhealthy = false;
+  ForEachChunk([&](std::size_t offset) {
+    const LaneVec any = hn::Max(Load(health.velocity_overflow, offset),
+                                hn::Max(Load(health.non_finite, offset),
+                                        Load(health.out_of_range, offset)));
+    unhealthy |= !hn::AllTrue(LaneTag(), hn::Eq(any, Zero()));
+  });
+  return unhealthy;
 }
 
 const StepKernels* GetStepKernels() {

@@ -23,7 +23,9 @@ struct StepParams {
 
 struct StepKernels {
   TargetInfo target;
-  void (*step_block)(const StepPlan& plan, std::byte* block, const StepParams& params);
+  // Steps the block and checks the health of its worlds (WorldHealthLanes);
+  // true if any lane of the block is unhealthy.
+  bool (*step_block)(const StepPlan& plan, std::byte* block, const StepParams& params);
 };
 
 MANYWORLDS_DECLARE_KERNEL_TABLE(StepKernels)

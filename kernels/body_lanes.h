@@ -40,6 +40,15 @@ struct BodyMotionLanes {
   LaneArray gravity_factor;
 };
 
+// Per block: the health check of each world for the Step being taken (the
+// meaning of each flag is WorldHealthBits in manyworlds/batch.h). 1 where the
+// condition was seen, 0 elsewhere; cleared at the start of every Step.
+struct WorldHealthLanes {
+  LaneArray velocity_overflow;  // |v|^2 or |w|^2 overflowed in a force step
+  LaneArray non_finite;         // a body's state was NaN or infinite after the Step
+  LaneArray out_of_range;       // a body's position was beyond the healthy coordinate
+};
+
 // The two bodies a part acts on in one block, with their motion types (the
 // same in every world of the batch, so kernels branch on them).
 struct BodyPair {

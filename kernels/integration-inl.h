@@ -7,6 +7,9 @@
 //                                             locked rotation axes masked)
 //   v <- v max(0, 1 - c_lin dt),  w <- w max(0, 1 - c_ang dt)
 //   |v| <= v_max, |w| <= w_max               (uniform rescale when exceeded)
+//   A lane whose |v|^2 or |w|^2 overflows float here (forces of ~1e30) is
+//   marked in WorldHealthLanes::velocity_overflow: Jolt's clamp would turn
+//   that velocity into 0 (v * max / inf) without a word.
 // Integration (after the velocity iterations):
 //   dynamic bodies clamp |v|, |w| again; then q <- AddRotationStep(w dt)
 //   (exact axis-angle, normalised, skipped below 1e-6 rad) and
@@ -44,7 +47,8 @@ HWY_INLINE Vec3 ClampLength(const Vec3& v, LaneVec max_length) {
 // use only at the end of the whole step (the caller), as they act in every
 // substep.
 HWY_INLINE void ApplyForcesAndDamping(BodyLanes& body, const BodyMotionLanes& motion,
-                                      const Vec3& gravity, LaneVec delta_time) {
+                                      const Vec3& gravity, LaneVec delta_time,
+                                      WorldHealthLanes& health) {
   ForEachChunk([&](std::size_t offset) {
     const LaneVec inv_mass = Load(body.inv_mass, offset);
     const LaneVec gravity_factor = Load(motion.gravity_factor, offset);
@@ -60,9 +64,15 @@ HWY_INLINE void ApplyForcesAndDamping(BodyLanes& body, const BodyMotionLanes& mo
         hn::Max(Zero(), hn::NegMulAdd(Load(motion.linear_damping, offset), delta_time, one));
     const LaneVec angular_keep =
         hn::Max(Zero(), hn::NegMulAdd(Load(motion.angular_damping, offset), delta_time, one));
-    linear = ClampLength(Scale(linear, linear_keep), Load(motion.max_linear_velocity, offset));
-    angular =
-        ClampLength(Scale(angular, angular_keep), Load(motion.max_angular_velocity, offset));
+    linear = Scale(linear, linear_keep);
+    angular = Scale(angular, angular_keep);
+    const LaneMask overflow =
+        hn::Or(hn::IsInf(LengthSquared(linear)), hn::IsInf(LengthSquared(angular)));
+    Store(hn::Max(Load(health.velocity_overflow, offset),
+                  hn::IfThenElseZero(overflow, Splat(1.0f))),
+          health.velocity_overflow, offset);
+    linear = ClampLength(linear, Load(motion.max_linear_velocity, offset));
+    angular = ClampLength(angular, Load(motion.max_angular_velocity, offset));
     StoreVec3(linear, body.linear_velocity, offset);
     StoreVec3(angular, body.angular_velocity, offset);
   });
@@ -83,6 +93,35 @@ HWY_INLINE void IntegrateBody(BodyLanes& body, const BodyMotionLanes* motion,
     }
     AddRotationStep(body, Scale(angular, delta_time), offset);
     AddPositionStep(body, Scale(linear, delta_time), offset);
+  });
+}
+
+// After a Step: marks the lanes where the body's position, rotation or
+// velocities are not finite, or a coordinate lies beyond max_coordinate.
+HWY_INLINE void CheckBodyHealth(const BodyLanes& body, LaneVec max_coordinate,
+                                WorldHealthLanes& health) {
+  ForEachChunk([&](std::size_t offset) {
+    const Vec3 position = LoadVec3(body.position, offset);
+    const Quat rotation = LoadQuat(body.rotation, offset);
+    const Vec3 linear = LoadVec3(body.linear_velocity, offset);
+    const Vec3 angular = LoadVec3(body.angular_velocity, offset);
+    LaneMask finite = hn::IsFinite(rotation.w);
+    for (const Vec3* v : {&position, &linear, &angular}) {
+      finite = hn::And(finite, hn::And(hn::IsFinite(v->x),
+                                       hn::And(hn::IsFinite(v->y), hn::IsFinite(v->z))));
+    }
+    finite = hn::And(finite, hn::And(hn::IsFinite(rotation.x),
+                                     hn::And(hn::IsFinite(rotation.y), hn::IsFinite(rotation.z))));
+    const LaneMask non_finite = hn::Not(finite);
+    const LaneVec farthest =
+        hn::Max(hn::Max(hn::Abs(position.x), hn::Abs(position.y)), hn::Abs(position.z));
+    // Only finite lanes: Max of a NaN differs between targets.
+    const LaneMask out_of_range = hn::And(finite, hn::Gt(farthest, max_coordinate));
+    const LaneVec one = Splat(1.0f);
+    Store(hn::Max(Load(health.non_finite, offset), hn::IfThenElseZero(non_finite, one)),
+          health.non_finite, offset);
+    Store(hn::Max(Load(health.out_of_range, offset), hn::IfThenElseZero(out_of_range, one)),
+          health.out_of_range, offset);
   });
 }
 

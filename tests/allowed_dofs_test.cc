@@ -28,11 +28,11 @@
 #include <string>
 #include <vector>
 
-#include "batch/step_kernels.h"
 #include "manyworlds/batch.h"
 #include "manyworlds/error.h"
 #include "manyworlds/scene.h"
 #include "reference/world.h"
+#include "tests/step_targets.h"
 
 namespace manyworlds {
 namespace {
@@ -42,14 +42,6 @@ using ::testing::HasSubstr;
 
 constexpr int kSteps = 300;
 constexpr std::size_t kWorlds = 20;  // two blocks, the second mostly padding
-
-std::vector<std::int64_t> Targets() {
-  std::vector<std::int64_t> targets;
-  for (const StepKernels* kernels : SupportedKernels<StepKernels>()) {
-    targets.push_back(kernels->target.bits);
-  }
-  return targets;
-}
 
 // Rotation by `angle` about world Z, (x, y, z, w).
 Quaternion AboutZ(float angle) { return {0, 0, std::sin(angle / 2), std::cos(angle / 2)}; }
@@ -597,7 +589,8 @@ TEST_P(AllowedDofsTargetTest, MixedScenesMatchTheReferenceStepByStep) {
   EXPECT_LT(worst_double.velocity, kStepTolerance) << "velocity vs reference<double>";
 }
 
-INSTANTIATE_TEST_SUITE_P(EveryTarget, AllowedDofsTargetTest, ::testing::ValuesIn(Targets()),
+INSTANTIATE_TEST_SUITE_P(EveryTarget, AllowedDofsTargetTest,
+                         ::testing::ValuesIn(SupportedStepTargets()),
                          [](const auto& info) { return std::string(hwy::TargetName(info.param)); });
 
 // ------------------------------------------------------------- (d) refusal

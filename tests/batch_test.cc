@@ -193,9 +193,10 @@ TEST(PlanTest, StorageAndPartsAreOnlyWhatTheSceneUses) {
   EXPECT_FALSE(plain.constraints[0].has_limits());
   EXPECT_FALSE(plain.constraints[0].has_motor());
   EXPECT_EQ(plain.constraints[0].PartsInOrder(), "point hinge_rotation");
-  // 2 bodies, motion lanes for the dynamic one only, one bare hinge.
-  EXPECT_EQ(plain.block_bytes,
-            2 * sizeof(BodyLanes) + sizeof(BodyMotionLanes) + sizeof(HingeConstraintLanes));
+  // 2 bodies, motion lanes for the dynamic one only, one bare hinge, and the
+  // per-world health flags every block has.
+  EXPECT_EQ(plain.block_bytes, 2 * sizeof(BodyLanes) + sizeof(BodyMotionLanes) +
+                                   sizeof(HingeConstraintLanes) + sizeof(WorldHealthLanes));
 
   Hinge(scene).limits_min = -1.0f;
   Hinge(scene).motor_state = MotorState::kVelocity;

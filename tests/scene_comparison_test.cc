@@ -32,10 +32,10 @@
 #include <tuple>
 #include <vector>
 
-#include "batch/step_kernels.h"
 #include "manyworlds/batch.h"
 #include "manyworlds/scenes.h"
 #include "reference/world.h"
+#include "tests/step_targets.h"
 
 namespace manyworlds {
 namespace {
@@ -307,18 +307,10 @@ TEST_P(SceneComparisonTest, MotorDrivenScenesFollowTheReferenceTrajectory) {
   EXPECT_LT(worst.velocity, kTrajectoryTolerance);
 }
 
-std::vector<std::int64_t> Targets() {
-  std::vector<std::int64_t> targets;
-  for (const StepKernels* kernels : SupportedKernels<StepKernels>()) {
-    targets.push_back(kernels->target.bits);
-  }
-  return targets;
-}
-
 INSTANTIATE_TEST_SUITE_P(
     ReferenceScenes, SceneComparisonTest,
     ::testing::Combine(::testing::Values("cartpole", "chain16", "rackpinion", "geartrain", "mixed"),
-                       ::testing::ValuesIn(Targets())),
+                       ::testing::ValuesIn(SupportedStepTargets())),
     [](const auto& info) {
       std::string name = std::get<0>(info.param) + "_" +
                          hwy::TargetName(std::get<1>(info.param));

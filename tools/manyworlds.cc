@@ -172,13 +172,10 @@ int Run(int argc, char** argv) {
     max_error = std::max(max_error, e);
     sum_error += e;
   }
-  std::vector<float> state(worlds * batch.body_count() * kStateFloatsPerBody);
-  batch.GetState(state);
-  std::size_t non_finite = 0;
-  const std::size_t per_world = batch.body_count() * kStateFloatsPerBody;
-  for (std::size_t w = 0; w < worlds; ++w) {
-    non_finite += !std::all_of(state.begin() + w * per_world, state.begin() + (w + 1) * per_world,
-                               [](float x) { return std::isfinite(x); });
+  // The library's own health check of the last step (WorldHealthBits).
+  std::size_t by_bit[4] = {0, 0, 0, 0};
+  for (const std::uint8_t bits : batch.WorldHealth()) {
+    for (int bit = 0; bit < 4; ++bit) by_bit[bit] += (bits >> bit) & 1u;
   }
 
   const double world_steps = double(worlds) * double(steps);
@@ -208,8 +205,11 @@ int Run(int argc, char** argv) {
               "%llu (m for linear rows, rad for angular rows)\n",
               double(max_error), worlds > bad_error ? sum_error / double(worlds - bad_error) : 0.0,
               static_cast<unsigned long long>(warmup + steps));
-  std::printf("non-finite worlds:    %zu of %zu (state), %zu (constraint error)\n", non_finite,
-              worlds, bad_error);
+  std::printf("unhealthy worlds:     %zu of %zu after the last step (non-finite state %zu, "
+              "velocity overflow %zu, position out of range %zu, non-finite input %zu); "
+              "%zu with a non-finite constraint error\n",
+              batch.UnhealthyWorldCount(), worlds, by_bit[0], by_bit[1], by_bit[2], by_bit[3],
+              bad_error);
   return 0;
 }
 

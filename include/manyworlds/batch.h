@@ -21,6 +21,31 @@
 
 namespace manyworlds {
 
+// Per-world health after a Step (Batch::WorldHealth): 0 when healthy, else an
+// OR of these bits. A world is unhealthy when float arithmetic broke down in
+// it, never because of what its neighbours hold.
+enum WorldHealthBits : std::uint8_t {
+  // A position, rotation or velocity of a body is NaN or infinite (bad forces,
+  // targets, states or parameters written into the world, or a blow-up).
+  kNonFiniteState = 1,
+  // |v|^2 or |w|^2 overflowed float in the force step (e.g. 1e30 N): Jolt's
+  // velocity clamp would silently turn such a velocity into zero.
+  kVelocityOverflow = 2,
+  // A coordinate beyond kMaxHealthyCoordinate: float spacing there exceeds
+  // 1 m, so no joint anchor can be represented any more.
+  kPositionOutOfRange = 4,
+  // A force, torque or motor target written into the world since the
+  // previous Step was NaN or infinite (actions are never refused).
+  kNonFiniteInput = 8,
+};
+inline constexpr float kMaxHealthyCoordinate = 16777216.0f;  // 2^24 m
+
+// What Step does with the worlds it finds unhealthy (after flagging them).
+enum class UnhealthyWorlds : std::uint8_t {
+  kKeep,   // leave them as the step left them (they stay flagged until reset)
+  kReset,  // put them back to the scene's initial state, as Reset does
+};
+
 // Jolt's PhysicsSettings that matter to constraint-only worlds (spec 4.2).
 struct StepSettings {
   float delta_time = 1.0f / 60.0f;  // s, of the whole step
@@ -30,6 +55,7 @@ struct StepSettings {
   float baumgarte = 0.2f;
   bool warm_start = true;
   Float3 gravity{0.0f, -9.81f, 0.0f};
+  UnhealthyWorlds unhealthy_worlds = UnhealthyWorlds::kKeep;
 };
 
 struct BatchOptions {
@@ -73,7 +99,9 @@ class Batch {
   // ---- state, world-major: [world][body][13] (see StateField)
   void GetState(std::span<float> out) const;
   // Writes every world, or only those with mask[world] != 0. Rotations are
-  // normalised; velocities of static bodies stay zero.
+  // normalised; velocities of static bodies stay zero. Non-finite values are
+  // written as given (the next Step flags the world, see WorldHealth); a zero
+  // rotation is refused before anything is written.
   void SetState(std::span<const float> in, std::span<const std::uint8_t> world_mask = {});
   // One field of every world and body: [world][body][StateFieldSize(field)].
   void GetField(StateField field, std::span<float> out) const;
@@ -129,6 +157,11 @@ class Batch {
   const char* SimdTarget() const;     // Highway's name of the dispatched target
   std::size_t SimdLanes() const;      // floats per vector on it
   int threads() const;
+
+  // Health of every world after the last Step, [world]: 0 or WorldHealthBits.
+  // Worlds never interact: a flagged world changes no bit of any other world.
+  std::span<const std::uint8_t> WorldHealth() const;
+  std::size_t UnhealthyWorldCount() const;
 
   // The largest position error of any constraint in a world after the last
   // step (m for linear rows, rad for angular rows), for accuracy reports.
