@@ -565,11 +565,15 @@ void Batch::SetGravityFactor(std::size_t world, std::size_t body, float factor) 
 void Batch::SetLimits(std::size_t world, std::size_t constraint, float min, float max) {
   impl_->WithLimits(world, constraint, "limits", [&](auto& limit, const ConstraintPlan& c) {
     const bool hinge = c.type == ConstraintType::kHinge;
-    const bool ok = hinge ? (min >= -kPi && min <= 0.0f && max >= 0.0f && max <= kPi)
-                          : (min <= 0.0f && max >= 0.0f);
+    const bool distance = c.type == ConstraintType::kDistance;
+    const bool ok = hinge      ? (min >= -kPi && min <= 0.0f && max >= 0.0f && max <= kPi)
+                    : distance ? (min >= 0.0f && min <= max && std::isfinite(max))
+                               : (min <= 0.0f && max >= 0.0f);
     if (!ok) {
       throw SceneError(c.label + ": limits_min / limits_max " +
-                       (hinge ? "must lie in [-pi, 0] and [0, pi]" : "must be <= 0 and >= 0"));
+                       (hinge      ? "must lie in [-pi, 0] and [0, pi]"
+                        : distance ? "must be finite with 0 <= min <= max"
+                                   : "must be <= 0 and >= 0"));
     }
     limit.min[Impl::Lane(world)] = min;
     limit.max[Impl::Lane(world)] = max;

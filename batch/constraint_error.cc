@@ -153,6 +153,13 @@ double ConstraintErrorOfLane(const StepPlan& plan, const std::byte* block, std::
                                       read, read.at<SliderConstraintLanes>(sl.offset));
       return std::abs(Fold(theta - read(s.geometry.ratio) * d));
     }
+    case ConstraintType::kDistance: {
+      const auto& s = read.at<DistanceConstraintLanes>(c.offset);
+      const auto& limit = read.at<LinearLimitLanes>(c.limit_offset);
+      const double length = ((b2.x + b2.q * read(s.anchors.r2_local)) -
+                             (b1.x + b1.q * read(s.anchors.r1_local))).norm();
+      return LimitViolation(length, read(limit.min), read(limit.max));
+    }
   }
   return 0.0;
 }

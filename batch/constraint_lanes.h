@@ -103,4 +103,14 @@ struct RackAndPinionConstraintLanes {
   LaneArray error;
 };
 
+// ---- Distance: one axis row along the anchor separation; its min/max,
+// spring, geometry and part are the LinearLimitLanes at the limit offset.
+struct DistanceConstraintLanes {
+  PointGeometry anchors;
+  Vec3Lanes normal;  // persistent: n of the last non-zero separation (initially +Y)
+  // World anchors at the last CalculateProperties: the position phase measures
+  // its error from these (Jolt's quirk, spec 3 Distance).
+  Vec3Lanes world_point1, world_point2;
+};
+
 }  // namespace manyworlds

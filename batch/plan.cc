@@ -25,6 +25,7 @@ const char* SettingsTypeName(const ConstraintSettings& settings) {
         if constexpr (std::is_same_v<S, GearConstraintSettings>) return "gear";
         if constexpr (std::is_same_v<S, RackAndPinionConstraintSettings>)
           return "rack_and_pinion";
+        if constexpr (std::is_same_v<S, DistanceConstraintSettings>) return "distance";
       },
       settings);
 }
@@ -116,6 +117,14 @@ void CheckBody(const BodySettings& body, const std::string& what) {
   CheckFinite(what, "gravity_factor", body.gravity_factor);
 }
 
+void CheckSpring(const std::string& what, const std::string& field,
+                 const SpringSettings& spring) {
+  if (!Finite(spring.frequency_or_stiffness) || !Finite(spring.damping) ||
+      spring.damping < 0.0f) {
+    Refuse(what, field, "must have a finite frequency or stiffness and a finite damping >= 0");
+  }
+}
+
 void CheckMotor(const std::string& what, MotorState state, const MotorSettings& motor,
                 float max_friction, const char* friction_field) {
   if (!Finite(max_friction) || max_friction < 0.0f) {
@@ -126,6 +135,7 @@ void CheckMotor(const std::string& what, MotorState state, const MotorSettings& 
     Refuse(what, "motor.min_force_limit / max_force_limit",
            "must be ordered, min <= max");
   }
+  CheckSpring(what, "motor.spring", motor.spring);
   if (state == MotorState::kPosition && !motor.spring.HasStiffness()) {
     Refuse(what, "motor.spring", "needs a positive frequency or stiffness for a position motor");
   }
@@ -173,6 +183,7 @@ const char* ConstraintTypeName(ConstraintType type) {
     case ConstraintType::kSlider: return "slider";
     case ConstraintType::kGear: return "gear";
     case ConstraintType::kRackAndPinion: return "rack_and_pinion";
+    case ConstraintType::kDistance: return "distance";
   }
   return "unknown";
 }
@@ -226,6 +237,7 @@ std::string ConstraintPlan::PartsInOrder() const {
       return helper1 != kNoConstraint
                  ? "rack_and_pinion (position correction through hinge and slider)"
                  : "rack_and_pinion (velocity only)";
+    case ConstraintType::kDistance: return "axis(" + limit_row + ")";
   }
   return "";
 }
@@ -334,6 +346,7 @@ StepPlan CompilePlan(const Scene& scene) {
             }
             CheckMotor(what, s.motor_state, s.motor, s.max_friction_torque,
                        "max_friction_torque");
+            CheckSpring(what, "limits_spring", s.limits_spring);
             CheckFinite(what, "target_angular_velocity", s.target_angular_velocity);
             CheckFinite(what, "target_angle", s.target_angle);
             c.type = ConstraintType::kHinge;
@@ -370,6 +383,7 @@ StepPlan CompilePlan(const Scene& scene) {
             }
             CheckMotor(what, s.motor_state, s.motor, s.max_friction_force,
                        "max_friction_force");
+            CheckSpring(what, "limits_spring", s.limits_spring);
             CheckFinite(what, "target_velocity", s.target_velocity);
             CheckFinite(what, "target_position", s.target_position);
             c.type = ConstraintType::kSlider;
@@ -382,6 +396,25 @@ StepPlan CompilePlan(const Scene& scene) {
             c.drive = DriveOf(s.motor_state, s.max_friction_force);
             c.motor_spring_mode = s.motor.spring.mode;
             if (c.drive != DriveKind::kNone) c.motor_offset = layout.Add<LinearMotorLanes>();
+          } else if constexpr (std::is_same_v<S, DistanceConstraintSettings>) {
+            CheckFinite(what, "point1", s.point1);
+            CheckFinite(what, "point2", s.point2);
+            CheckFinite(what, "min_distance", s.min_distance);
+            CheckFinite(what, "max_distance", s.max_distance);
+            // Negative bounds are resolved from the initial distance, which
+            // keeps min <= max; two given bounds must be ordered.
+            if (s.min_distance >= 0.0f && s.max_distance >= 0.0f &&
+                s.min_distance > s.max_distance) {
+              Refuse(what, "min_distance / max_distance",
+                     "must be ordered, min <= max (got " + std::to_string(s.min_distance) +
+                         " > " + std::to_string(s.max_distance) + ")");
+            }
+            CheckSpring(what, "limits_spring", s.limits_spring);
+            c.type = ConstraintType::kDistance;
+            c.offset = layout.Add<DistanceConstraintLanes>();
+            c.limit_offset = layout.Add<LinearLimitLanes>();
+            c.soft_limits = s.limits_spring.HasStiffness();
+            c.limit_spring_mode = s.limits_spring.mode;
           } else {
             // Gear and rack-and-pinion: both bodies must be able to turn / move
             // (spec 1.5: the parts read motion properties of both bodies).

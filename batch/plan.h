@@ -29,6 +29,7 @@ enum class ConstraintType : std::uint8_t {
   kSlider,
   kGear,
   kRackAndPinion,
+  kDistance,
 };
 const char* ConstraintTypeName(ConstraintType type);
 

@@ -6,6 +6,7 @@
 #include <Eigen/Dense>
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <utility>
 #include <type_traits>
 
 #include "batch/constraint_block.h"
@@ -89,6 +90,10 @@ class Frames {
   Vector Point2(const Float3& p) const { return Local(body2_, ToVector(p)); }
   Vector Axis1(const Float3& a) const { return LocalAxis(body1_, ToVector(a)); }
   Vector Axis2(const Float3& a) const { return LocalAxis(body2_, ToVector(a)); }
+
+  // World position at the initial poses of a body-COM-space anchor.
+  Vector World1(const Vector& local) const { return body1_.position + body1_.rotation * local; }
+  Vector World2(const Vector& local) const { return body2_.position + body2_.rotation * local; }
 
   // Jolt's mAutoDetectPoint: the inverse-mass-weighted average of the centres
   // of mass, or the centre of mass of the body that can move.
@@ -187,6 +192,17 @@ void WriteLimit(Limit& limit, float min, float max, const SpringSettings& spring
   Fill(limit.geometry.spring, spring);
 }
 
+// Jolt's DistanceConstraint: a negative bound means the initial distance
+// (both: a rod of that length; min only: min(initial, max); max only:
+// max(initial, min)).
+std::pair<float, float> ResolveDistanceLimits(const DistanceConstraintSettings& s,
+                                              float initial) {
+  if (s.min_distance < 0.0f && s.max_distance < 0.0f) return {initial, initial};
+  if (s.min_distance < 0.0f) return {std::min(initial, s.max_distance), s.max_distance};
+  if (s.max_distance < 0.0f) return {s.min_distance, std::max(initial, s.min_distance)};
+  return {s.min_distance, s.max_distance};
+}
+
 void WriteConstraint(const ConstraintPlan& c, const ConstraintSettings& settings,
                      const Frames& frames, std::byte* block) {
   std::visit(
@@ -257,6 +273,15 @@ void WriteConstraint(const ConstraintPlan& c, const ConstraintSettings& settings
             WriteMotor(At<LinearMotorLanes>(block, c.motor_offset), s.motor, s.target_velocity,
                        target, s.max_friction_force);
           }
+        } else if constexpr (std::is_same_v<S, DistanceConstraintSettings>) {
+          auto& lanes = At<DistanceConstraintLanes>(block, c.offset);
+          const Vector r1 = frames.Point1(s.point1), r2 = frames.Point2(s.point2);
+          Fill(lanes.anchors.r1_local, r1);
+          Fill(lanes.anchors.r2_local, r2);
+          Fill(lanes.normal, Vector(0, 1, 0));  // Jolt's initial normal
+          const auto [min, max] = ResolveDistanceLimits(
+              s, float((frames.World2(r2) - frames.World1(r1)).norm()));
+          WriteLimit(At<LinearLimitLanes>(block, c.limit_offset), min, max, s.limits_spring);
         } else if constexpr (std::is_same_v<S, GearConstraintSettings>) {
           auto& lanes = At<GearConstraintLanes>(block, c.offset);
           Fill(lanes.hinge_axis1_local, frames.Axis1(s.hinge_axis1));

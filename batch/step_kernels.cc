@@ -22,6 +22,7 @@
 #include "hwy/foreach_target.h"  // IWYU pragma: keep
 
 #include "batch/constraint_block.h"
+#include "batch/distance_constraint-inl.h"
 #include "batch/fixed_constraint-inl.h"
 #include "batch/gear_constraint-inl.h"
 #include "batch/hinge_constraint-inl.h"
@@ -42,6 +43,7 @@ inline void SetupConstraint(const ConstraintBlock& c, const StepScalars& step) {
     case ConstraintType::kSlider: return SliderConstraintSetup(c, step);
     case ConstraintType::kGear: return GearConstraintSetup(c, step);
     case ConstraintType::kRackAndPinion: return RackAndPinionConstraintSetup(c, step);
+    case ConstraintType::kDistance: return DistanceConstraintSetup(c, step);
   }
 }
 
@@ -53,6 +55,7 @@ inline void WarmStartConstraint(const ConstraintBlock& c, const StepScalars& ste
     case ConstraintType::kSlider: return SliderConstraintWarmStart(c, step);
     case ConstraintType::kGear: return GearConstraintWarmStart(c, step);
     case ConstraintType::kRackAndPinion: return RackAndPinionConstraintWarmStart(c, step);
+    case ConstraintType::kDistance: return DistanceConstraintWarmStart(c, step);
   }
 }
 
@@ -64,6 +67,7 @@ inline bool SolveConstraintVelocity(const ConstraintBlock& c) {
     case ConstraintType::kSlider: return SliderConstraintSolveVelocity(c);
     case ConstraintType::kGear: return GearConstraintSolveVelocity(c);
     case ConstraintType::kRackAndPinion: return RackAndPinionConstraintSolveVelocity(c);
+    case ConstraintType::kDistance: return DistanceConstraintSolveVelocity(c);
   }
   return false;
 }
@@ -78,6 +82,7 @@ inline bool SolveConstraintPosition(const StepPlan& plan, const ConstraintBlock&
     case ConstraintType::kGear: return GearConstraintSolvePosition(plan, c, step);
     case ConstraintType::kRackAndPinion:
       return RackAndPinionConstraintSolvePosition(plan, c, step);
+    case ConstraintType::kDistance: return DistanceConstraintSolvePosition(c, step);
   }
   return false;
 }

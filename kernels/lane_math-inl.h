@@ -738,6 +738,25 @@ HWY_INLINE void StoreActiveLanes(const PartLanes& part, LaneFlags& active) {
   });
 }
 
+// For a struct made only of LaneArrays: the lanes of `value` that are not set
+// in `changed` get `previous`'s bits back. For verbs that Jolt runs in some
+// worlds only (a recompute where a position error is non-zero): run them in
+// every lane on a copy's worth of state, then keep the result where they ran.
+template <class Lanes>
+HWY_INLINE void KeepChangedLanes(const LaneFlags& changed, Lanes& value, const Lanes& previous) {
+  static_assert(sizeof(Lanes) % sizeof(LaneArray) == 0, "a struct of LaneArrays");
+  constexpr std::size_t kArrays = sizeof(Lanes) / sizeof(LaneArray);
+  LaneArray* out = reinterpret_cast<LaneArray*>(&value);
+  const LaneArray* old = reinterpret_cast<const LaneArray*>(&previous);
+  ForEachChunk([&](std::size_t offset) {
+    const LaneMask keep_new = LoadFlags(changed, offset);
+    for (std::size_t i = 0; i < kArrays; ++i) {
+      Store(hn::IfThenElse(keep_new, Load(out[i], offset), Load(old[i], offset)), out[i],
+            offset);
+    }
+  });
+}
+
 }  // namespace HWY_NAMESPACE
 }  // namespace manyworlds
 HWY_AFTER_NAMESPACE();

@@ -45,6 +45,7 @@
 #include "manyworlds/batch.h"
 #include "manyworlds/scene.h"
 #include "reference/body.h"
+#include "reference/distance_constraint.h"
 #include "reference/fixed_constraint.h"
 #include "reference/gear_constraint.h"
 #include "reference/hinge_constraint.h"
@@ -62,7 +63,8 @@ class World {
   // Same order as manyworlds::ConstraintSettings.
   using Constraint =
       std::variant<PointConstraint<T>, FixedConstraint<T>, HingeConstraint<T>,
-                   SliderConstraint<T>, GearConstraint<T>, RackAndPinionConstraint<T>>;
+                   SliderConstraint<T>, GearConstraint<T>, RackAndPinionConstraint<T>,
+                   DistanceConstraint<T>>;
 
   // Converts every body and constraint (world-space settings refer to the poses
   // in the scene). Throws std::invalid_argument for body or helper indices that do
@@ -164,6 +166,8 @@ class World {
       return HingeConstraint<T>(settings, body1, body2);
     } else if constexpr (std::is_same_v<Settings, SliderConstraintSettings>) {
       return SliderConstraint<T>(settings, body1, body2);
+    } else if constexpr (std::is_same_v<Settings, DistanceConstraintSettings>) {
+      return DistanceConstraint<T>(settings, body1, body2);
     } else {
       // Gear and rack-and-pinion read both bodies' motion properties (spec 1.5).
       if (body1.IsStatic() || body2.IsStatic()) {

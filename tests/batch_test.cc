@@ -17,6 +17,7 @@
 #include "manyworlds/batch.h"
 #include "manyworlds/error.h"
 #include "manyworlds/scenes.h"
+#include "reference/world.h"
 
 namespace manyworlds {
 namespace {
@@ -164,8 +165,70 @@ INSTANTIATE_TEST_SUITE_P(
                        gear.hinge2 = 2;  // the gear itself
                        s.AddConstraint(gear);
                      },
-                     {"'cog'", "hinge2"}}),
+                     {"'cog'", "hinge2"}},
+        BadSceneCase{"DistanceMinAboveMax",
+                     [](Scene& s) {
+                       DistanceConstraintSettings rope;
+                       rope.name = "rope";
+                       rope.body1 = 0;
+                       rope.body2 = 1;
+                       rope.min_distance = 2;
+                       rope.max_distance = 1;
+                       s.AddConstraint(rope);
+                     },
+                     {"'rope'", "min_distance", "max_distance"}},
+        BadSceneCase{"DistanceNanBound",
+                     [](Scene& s) {
+                       DistanceConstraintSettings rope;
+                       rope.name = "rope";
+                       rope.body1 = 0;
+                       rope.body2 = 1;
+                       rope.max_distance = NAN;
+                       s.AddConstraint(rope);
+                     },
+                     {"'rope'", "max_distance"}},
+        BadSceneCase{"NonFiniteLimitsSpring",
+                     [](Scene& s) { Hinge(s).limits_spring.damping = INFINITY; },
+                     {"'elbow'", "limits_spring"}}),
     [](const auto& info) { return info.param.name; });
+
+// Jolt's defaults for negative distance bounds (spec 3, Distance), with the
+// two bodies 2 m apart: both negative, a rod of 2 m (error 0); min only,
+// min(2, max = 1.5) = 1.5 = max, so the rope is 0.5 m too long at once; max
+// only, max(2, min = 1) = 2 (error 0). A wrong resolution (e.g. leaving -1
+// in place, or min > max) shows up as a different constraint error; the
+// reference resolves them independently and must agree.
+TEST(BatchTest, DistanceBoundsDefaultToTheInitialLength) {
+  struct Case {
+    float min, max;
+    double expected_min, expected_max, expected_error;
+  };
+  for (const Case& c : {Case{-1, -1, 2, 2, 0}, Case{-1, 1.5f, 1.5, 1.5, 0.5},
+                        Case{1, -1, 1, 2, 0}}) {
+    SCOPED_TRACE("min " + std::to_string(c.min) + ", max " + std::to_string(c.max));
+    Scene scene;
+    BodySettings ground;
+    ground.motion_type = MotionType::kStatic;
+    scene.AddBody(ground);
+    BodySettings ball;
+    ball.position = {0, -2, 0};
+    scene.AddBody(ball);
+    DistanceConstraintSettings distance;
+    distance.body1 = 0;
+    distance.body2 = 1;
+    distance.point2 = {0, -2, 0};
+    distance.min_distance = c.min;
+    distance.max_distance = c.max;
+    scene.AddConstraint(distance);
+    Batch batch(scene, 3);
+    EXPECT_NEAR(batch.MaxConstraintError(2), c.expected_error, 1e-6);
+    const reference::World<double> world(scene);
+    const auto& reference =
+        std::get<reference::DistanceConstraint<double>>(world.constraint(0));
+    EXPECT_DOUBLE_EQ(reference.min_distance(), c.expected_min);
+    EXPECT_DOUBLE_EQ(reference.max_distance(), c.expected_max);
+  }
+}
 
 TEST(BatchTest, ZeroWorldsAndBadStepSettingsAreRefused) {
   EXPECT_THROW(Batch(HingeScene(), 0), SceneError);

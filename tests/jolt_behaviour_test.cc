@@ -442,6 +442,84 @@ TEST_P(JoltBehaviourTest, SliderSpring) {
   }
 }
 
+// TestDistanceSpring: a sphere (r = 0.5) at x = 10 tied to the static world's
+// origin by a distance constraint with min = max = 0 and a spring (f = 2 Hz,
+// ζ = 0.1, as stiffness and damping or as frequency and damping), no gravity:
+// x follows the recursion within 5e-6 for 120 steps (Jolt's tolerance); the
+// row is along X, so y and z stay exactly 0.
+TEST_P(JoltBehaviourTest, DistanceSpring) {
+  constexpr double kFrequency = 2.0, kDamping = 0.1;
+  for (const SpringMode mode :
+       {SpringMode::kStiffnessAndDamping, SpringMode::kFrequencyAndDamping}) {
+    SCOPED_TRACE(SpringModeName(mode));
+    const std::string suffix = std::string("_") + SpringModeName(mode);
+    Scene scene;
+    const std::size_t world_body = scene.AddBody(FixedToWorld());
+    const std::size_t sphere = scene.AddBody(Sphere(0.5, {10, 0, 0}));
+    const double m = double(scene.bodies()[sphere].mass);
+    const double omega = 2.0 * std::numbers::pi * kFrequency;
+    const double k = m * omega * omega, c = 2.0 * m * kDamping * omega;
+
+    DistanceConstraintSettings distance;
+    distance.body1 = world_body;
+    distance.body2 = sphere;
+    distance.point1 = {0, 0, 0};
+    distance.point2 = {10, 0, 0};
+    distance.min_distance = distance.max_distance = 0.0f;
+    distance.limits_spring.mode = mode;
+    if (mode == SpringMode::kStiffnessAndDamping) {
+      distance.limits_spring.frequency_or_stiffness = float(k);
+      distance.limits_spring.damping = float(c);
+    } else {
+      distance.limits_spring.frequency_or_stiffness = float(kFrequency);
+      distance.limits_spring.damping = float(kDamping);
+    }
+    scene.AddConstraint(distance);
+
+    const std::unique_ptr<Stepper> world = Make(scene);
+    StepSettings settings;
+    settings.gravity = {0, 0, 0};
+    SpringRecursion expected{k / m, c / m, 10.0};
+    for (int step = 0; step < 120; ++step) {
+      expected.Step();
+      world->Step(settings);
+      const Vec3d x = world->Position(sphere);
+      ASSERT_MEASURED_NEAR("x" + suffix, x.x(), expected.x, 5e-6) << "step " << step;
+      ASSERT_EQ(x.y(), 0.0) << "step " << step;
+      ASSERT_EQ(x.z(), 0.0) << "step " << step;
+    }
+  }
+}
+
+// A rope (min 0, max 1 m) holding a sphere that starts 0.5 m below the anchor
+// and falls: free fall until the rope is taut, then the sphere hangs at 1 m
+// (hard limit, Baumgarte position steps) and never goes further than the
+// Baumgarte residual of one step of gravity, v dt ~ 1e-3 m at rest.
+TEST_P(JoltBehaviourTest, DistanceRopeFallsFreelyThenHolds) {
+  Scene scene;
+  const std::size_t world_body = scene.AddBody(FixedToWorld());
+  const std::size_t sphere = scene.AddBody(Sphere(0.5, {0, -0.5, 0}));
+  DistanceConstraintSettings rope;
+  rope.body1 = world_body;
+  rope.body2 = sphere;
+  rope.point2 = {0, -0.5, 0};
+  rope.min_distance = 0.0f;
+  rope.max_distance = 1.0f;
+  scene.AddConstraint(rope);
+  const std::unique_ptr<Stepper> world = Make(scene);
+  Trajectory free_fall{-0.5, 0.0};
+  // Free fall for 0.5 m takes sqrt(2 * 0.5 / 9.81) = 0.32 s: 15 steps stay slack.
+  for (int step = 0; step < 15; ++step) {
+    world->Step(StepSettings{});
+    free_fall.Step(1, [](double) { return -9.81 * kDt; });
+    ASSERT_MEASURED_NEAR("free fall", world->Position(sphere).y(), free_fall.x, 1e-5)
+        << "step " << step;
+  }
+  for (int step = 15; step < 180; ++step) world->Step(StepSettings{});
+  EXPECT_MEASURED_NEAR("hanging", world->Position(sphere).y(), -1.0, 2e-3);
+  EXPECT_MEASURED_NEAR("at rest", world->LinearVelocity(sphere).y(), 0.0, 1e-3);
+}
+
 // ====================================================== hinge (Jolt's test)
 
 // Rotation angle of q about +Y (Jolt's test: GetAxisAngle, negated when the axis

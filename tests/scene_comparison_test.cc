@@ -209,6 +209,111 @@ Scene MixedScene() {
   return scene;
 }
 
+// The constraint types of issue 5 with every mode they have, out of plane:
+// distance as a rod (0.95 m, started 0.986 m apart), a rope (only a max), a
+// strut (min above the initial length, so it pushes from the first step) and
+// a spring (min = max with a limits spring), between static-dynamic and
+// dynamic-dynamic pairs. No rod starts exactly at its length: Jolt's position
+// phase measures the error from the anchors stored at setup and recomputes
+// only where it is non-zero, so a rod whose error is 0 in float and 1e-17 in
+// double takes its second position iteration from different anchors, a
+// legitimate discontinuity of the algorithm that would hide kernel errors
+// behind a 5e-6 m difference (the default "initial length" bounds are
+// checked in batch_test.cc instead).
+Scene MoreTypesScene() {
+  Scene scene;
+  auto body = [&](const char* name, MotionType type, Float3 position, float mass,
+                  Float3 inertia, Float3 velocity) {
+    BodySettings b;
+    b.name = name;
+    b.motion_type = type;
+    b.position = position;
+    b.mass = mass;
+    b.inertia_diagonal = inertia;
+    b.rotation = {0.1f, -0.05f, 0.08f, 0.99f};
+    b.linear_velocity = velocity;
+    b.angular_velocity = {0.3f, -0.2f, 0.5f};
+    return scene.AddBody(b);
+  };
+  const std::size_t ground = body("ground", MotionType::kStatic, {0, 0, 0}, 1, {1, 1, 1}, {});
+  const std::size_t bob = body("bob", MotionType::kDynamic, {0.4f, -1.0f, 0.2f}, 1.0f,
+                               {0.02f, 0.03f, 0.025f}, {0.5f, 0, -0.2f});
+  const std::size_t weight = body("weight", MotionType::kDynamic, {0.9f, -1.6f, -0.1f}, 3.0f,
+                                  {0.05f, 0.04f, 0.06f}, {});
+  const std::size_t swing = body("swing", MotionType::kDynamic, {-0.8f, -0.7f, 0.3f}, 0.5f,
+                                 {0.01f, 0.012f, 0.008f}, {0, 0, 0.8f});
+  const std::size_t spring_mass = body("spring mass", MotionType::kDynamic, {0.2f, 0.6f, -0.7f},
+                                       0.8f, {0.01f, 0.01f, 0.01f}, {0.3f, 0.4f, 0});
+
+  DistanceConstraintSettings rod;
+  rod.name = "rod";
+  rod.min_distance = rod.max_distance = 0.95f;
+  rod.body1 = ground;
+  rod.body2 = bob;
+  rod.point1 = {0.05f, 0.0f, 0.0f};
+  rod.point2 = {0.4f, -0.9f, 0.2f};
+  scene.AddConstraint(rod);
+
+  DistanceConstraintSettings rope;  // slack until it is 0.9 m long
+  rope.name = "rope";
+  rope.body1 = bob;
+  rope.body2 = weight;
+  rope.point1 = {0.4f, -1.1f, 0.2f};
+  rope.point2 = {0.9f, -1.5f, -0.1f};
+  rope.min_distance = 0.0f;
+  rope.max_distance = 0.6f;
+  scene.AddConstraint(rope);
+
+  DistanceConstraintSettings strut;  // min above the initial length: pushes
+  strut.name = "strut";
+  strut.body1 = swing;
+  strut.body2 = ground;
+  strut.space = ConstraintSpace::kLocalToBodyCOM;
+  strut.point1 = {0.1f, 0.05f, 0.0f};
+  strut.point2 = {-0.5f, 0.0f, 0.1f};
+  strut.min_distance = 1.0f;
+  strut.max_distance = 1.5f;
+  scene.AddConstraint(strut);
+
+  DistanceConstraintSettings spring;  // min = max = 0.5 m, soft
+  spring.name = "spring";
+  spring.body1 = swing;
+  spring.body2 = spring_mass;
+  spring.point1 = {-0.8f, -0.6f, 0.3f};
+  spring.point2 = {0.2f, 0.6f, -0.7f};
+  spring.min_distance = spring.max_distance = 0.5f;
+  spring.limits_spring.frequency_or_stiffness = 3.0f;
+  spring.limits_spring.damping = 0.2f;
+  scene.AddConstraint(spring);
+  return scene;
+}
+
+// Per-world velocity kicks of up to 0.3 m/s and rad/s on every dynamic body,
+// so that the worlds of a block differ and every per-lane decision (limit
+// sides, slack or taut, deactivations, recomputes where an error is
+// non-zero) is taken differently across the lanes of one vector.
+void KickEveryWorldDifferently(Batch& batch) {
+  const std::size_t per_world = batch.body_count() * kStateFloatsPerBody;
+  std::vector<float> state(batch.world_count() * per_world);
+  batch.GetState(state);
+  for (std::size_t w = 0; w < batch.world_count(); ++w) {
+    for (std::size_t b = 0; b < batch.body_count(); ++b) {
+      if (batch.scene().bodies()[b].motion_type != MotionType::kDynamic) continue;
+      float* body = state.data() + w * per_world + b * kStateFloatsPerBody;
+      for (int i = 7; i < 13; ++i) {
+        body[i] += 0.3f * std::sin(float(w * 13 + b * 7 + std::size_t(i)));
+      }
+    }
+  }
+  batch.SetState(state);
+}
+
+Scene ComparisonScene(const std::string& id) {
+  if (id == "mixed") return MixedScene();
+  if (id == "more_types") return MoreTypesScene();
+  return MakeReferenceScene(id);
+}
+
 // Scene id, Highway target bit.
 class SceneComparisonTest
     : public ::testing::TestWithParam<std::tuple<std::string, std::int64_t>> {
@@ -221,8 +326,17 @@ class SceneComparisonTest
 // measured worst cases (all targets, float and double reference) are 86 for
 // chain16 (16 coupled point rows: the velocity iterations pass rounding along
 // the chain) and 5 for the scenes with 2-4 rows; the bounds are ~6x those.
+//
+// more_types: measured worst 55 (velocity, against the float reference, on
+// AVX3/AVX2; 26 against double). Its bodies have inertias of 0.01-0.06
+// kg m^2, so lever-arm rounding is amplified into angular velocity, and the
+// soft spring row alone, compared with double, shows 200 for the float
+// reference as much as for the kernels: float's own rounding of gamma and
+// the bias (k = m_eff omega^2, c = 2 m_eff zeta omega at 3 Hz).
 double StepTolerance(const std::string& scene) {
-  return scene.rfind("chain", 0) == 0 ? 512.0 : 32.0;
+  if (scene.rfind("chain", 0) == 0) return 512.0;
+  if (scene == "more_types") return 256.0;
+  return 32.0;
 }
 
 // Whole trajectories of the motor-driven scenes: rounding differences do not
@@ -232,9 +346,11 @@ double StepTolerance(const std::string& scene) {
 constexpr double kTrajectoryTolerance = 64.0;
 
 TEST_P(SceneComparisonTest, EveryLaneMatchesTheReferenceStepByStep) {
-  const Scene scene = scene_id() == "mixed" ? MixedScene() : MakeReferenceScene(scene_id());
-  const SceneActions actions(scene_id() == "mixed" ? "chain16" : scene_id());
+  const Scene scene = ComparisonScene(scene_id());
+  const bool custom = scene_id() == "mixed" || scene_id() == "more_types";
+  const SceneActions actions(custom ? "chain16" : scene_id());  // chain16: no actions
   Batch batch(scene, kWorlds, options());
+  if (custom) KickEveryWorldDifferently(batch);
   std::vector<reference::World<float>> float_worlds(kWorlds, reference::World<float>(scene));
   std::vector<reference::World<double>> double_worlds(kWorlds, reference::World<double>(scene));
   const std::size_t per_world = batch.body_count() * kStateFloatsPerBody;
@@ -309,7 +425,8 @@ TEST_P(SceneComparisonTest, MotorDrivenScenesFollowTheReferenceTrajectory) {
 
 INSTANTIATE_TEST_SUITE_P(
     ReferenceScenes, SceneComparisonTest,
-    ::testing::Combine(::testing::Values("cartpole", "chain16", "rackpinion", "geartrain", "mixed"),
+    ::testing::Combine(::testing::Values("cartpole", "chain16", "rackpinion", "geartrain", "mixed",
+                                         "more_types"),
                        ::testing::ValuesIn(SupportedStepTargets())),
     [](const auto& info) {
       std::string name = std::get<0>(info.param) + "_" +

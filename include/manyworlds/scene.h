@@ -144,6 +144,22 @@ struct SliderConstraintSettings {
   float target_position = 0.0f;  // m, clamped into the limits
 };
 
+// Keeps the distance between body 1's point1 and body 2's point2 within
+// [min_distance, max_distance]: a rod (min = max), a rope (min = 0) or, with
+// a limits spring, a spring (spec 3, Distance). A negative bound means "the
+// initial distance": both negative, a rod of the initial length; only min
+// negative, min(initial, max); only max negative, max(initial, min).
+struct DistanceConstraintSettings {
+  std::string name;
+  std::size_t body1 = 0, body2 = 0;
+  ConstraintSpace space = ConstraintSpace::kWorldSpace;
+  Float3 point1{0, 0, 0};
+  Float3 point2{0, 0, 0};
+  float min_distance = -1.0f;  // m
+  float max_distance = -1.0f;  // m
+  SpringSettings limits_spring;  // frequency_or_stiffness > 0: soft limits
+};
+
 // No constraint index: the gear / rack has no position correction.
 inline constexpr std::size_t kNoConstraint = static_cast<std::size_t>(-1);
 
@@ -176,7 +192,7 @@ struct RackAndPinionConstraintSettings {
 using ConstraintSettings =
     std::variant<PointConstraintSettings, FixedConstraintSettings, HingeConstraintSettings,
                  SliderConstraintSettings, GearConstraintSettings,
-                 RackAndPinionConstraintSettings>;
+                 RackAndPinionConstraintSettings, DistanceConstraintSettings>;
 
 // The world every batch copies. Constraints are solved in the order they were
 // added (Jolt's order for equal priorities).
