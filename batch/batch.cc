@@ -638,8 +638,12 @@ void Batch::SetRatio(std::size_t world, std::size_t constraint, float ratio) {
     impl_->In<GearConstraintLanes>(world, c.offset).geometry.ratio[l] = ratio;
   } else if (c.type == ConstraintType::kRackAndPinion) {
     impl_->In<RackAndPinionConstraintLanes>(world, c.offset).geometry.ratio[l] = ratio;
+  } else if (c.type == ConstraintType::kPulley) {
+    if (!(ratio > 0.0f)) throw SceneError(c.label + ": ratio must be positive for a pulley");
+    impl_->In<PulleyConstraintLanes>(world, c.offset).geometry.ratio[l] = ratio;
   } else {
-    throw SceneError(c.label + ": ratio applies to gear and rack-and-pinion constraints only");
+    throw SceneError(c.label +
+                     ": ratio applies to gear, rack-and-pinion and pulley constraints only");
   }
 }
 

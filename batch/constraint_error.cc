@@ -160,6 +160,22 @@ double ConstraintErrorOfLane(const StepPlan& plan, const std::byte* block, std::
                              (b1.x + b1.q * read(s.anchors.r1_local))).norm();
       return LimitViolation(length, read(limit.min), read(limit.max));
     }
+    case ConstraintType::kCone: {
+      const auto& s = read.at<ConeConstraintLanes>(c.offset);
+      const Vector t1 = b1.q * read(s.twist_axis1_local);
+      const Vector t2 = b2.q * read(s.twist_axis2_local);
+      const double angle = std::atan2(t1.cross(t2).norm(), t1.dot(t2));
+      const double half_cone = std::acos(std::clamp(read(s.cos_half_cone_angle), -1.0, 1.0));
+      return std::max(AnchorError(b1, b2, read, s.anchors), std::max(0.0, angle - half_cone));
+    }
+    case ConstraintType::kPulley: {
+      const auto& s = read.at<PulleyConstraintLanes>(c.offset);
+      const double length =
+          (b1.x + b1.q * read(s.anchors.r1_local) - read(s.fixed_point1)).norm() +
+          read(s.geometry.ratio) *
+              (b2.x + b2.q * read(s.anchors.r2_local) - read(s.fixed_point2)).norm();
+      return LimitViolation(length, read(s.min_length), read(s.max_length));
+    }
   }
   return 0.0;
 }

@@ -13,6 +13,7 @@
 #include "kernels/dual_axis.h"
 #include "kernels/gear.h"
 #include "kernels/hinge_rotation.h"
+#include "kernels/independent_axis.h"
 #include "kernels/point.h"
 #include "kernels/rack_and_pinion.h"
 #include "kernels/rotation_euler.h"
@@ -111,6 +112,30 @@ struct DistanceConstraintLanes {
   // World anchors at the last CalculateProperties: the position phase measures
   // its error from these (Jolt's quirk, spec 3 Distance).
   Vec3Lanes world_point1, world_point2;
+};
+
+// ---- Pulley: one independent-axis row over the two rope segments.
+struct PulleyConstraintLanes {
+  PointGeometry anchors;                 // body points, body space
+  Vec3Lanes fixed_point1, fixed_point2;  // world space (parameters)
+  LaneArray min_length, max_length;      // m (parameters)
+  // n1, n2 persist: the last non-zero segment directions (initially -Y).
+  IndependentAxisGeometry geometry;
+  IndependentAxisLanes part;
+  LaneArray error;  // C of the current position iteration
+};
+
+// ---- Cone: point, then one angle row keeping the twist axes within the cone.
+struct ConeConstraintLanes {
+  PointGeometry anchors;
+  Vec3Lanes twist_axis1_local, twist_axis2_local;  // unit, body space
+  LaneArray cos_half_cone_angle;                   // parameter
+  // geometry.axis persists: the last non-degenerate rotation axis t2 x t1
+  // (initially a perpendicular of body 1's twist axis).
+  AngleGeometry geometry;
+  LaneArray cos_theta;  // t1 . t2 of the last properties computation
+  PointLanes point;
+  AngleLanes angle;
 };
 
 }  // namespace manyworlds

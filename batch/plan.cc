@@ -26,6 +26,8 @@ const char* SettingsTypeName(const ConstraintSettings& settings) {
         if constexpr (std::is_same_v<S, RackAndPinionConstraintSettings>)
           return "rack_and_pinion";
         if constexpr (std::is_same_v<S, DistanceConstraintSettings>) return "distance";
+        if constexpr (std::is_same_v<S, PulleyConstraintSettings>) return "pulley";
+        if constexpr (std::is_same_v<S, ConeConstraintSettings>) return "cone";
       },
       settings);
 }
@@ -184,6 +186,8 @@ const char* ConstraintTypeName(ConstraintType type) {
     case ConstraintType::kGear: return "gear";
     case ConstraintType::kRackAndPinion: return "rack_and_pinion";
     case ConstraintType::kDistance: return "distance";
+    case ConstraintType::kPulley: return "pulley";
+    case ConstraintType::kCone: return "cone";
   }
   return "unknown";
 }
@@ -238,6 +242,8 @@ std::string ConstraintPlan::PartsInOrder() const {
                  ? "rack_and_pinion (position correction through hinge and slider)"
                  : "rack_and_pinion (velocity only)";
     case ConstraintType::kDistance: return "axis(" + limit_row + ")";
+    case ConstraintType::kPulley: return "independent_axis(limits)";
+    case ConstraintType::kCone: return "point angle(cone limit)";
   }
   return "";
 }
@@ -415,6 +421,35 @@ StepPlan CompilePlan(const Scene& scene) {
             c.limit_offset = layout.Add<LinearLimitLanes>();
             c.soft_limits = s.limits_spring.HasStiffness();
             c.limit_spring_mode = s.limits_spring.mode;
+          } else if constexpr (std::is_same_v<S, ConeConstraintSettings>) {
+            CheckFinite(what, "point1", s.point1);
+            CheckFinite(what, "point2", s.point2);
+            CheckAxis(what, "twist_axis1", s.twist_axis1);
+            CheckAxis(what, "twist_axis2", s.twist_axis2);
+            if (!(s.half_cone_angle >= 0.0f && s.half_cone_angle <= kPi)) {
+              Refuse(what, "half_cone_angle", "must lie in [0, pi] (got " +
+                                                  std::to_string(s.half_cone_angle) + ")");
+            }
+            c.type = ConstraintType::kCone;
+            c.offset = layout.Add<ConeConstraintLanes>();
+          } else if constexpr (std::is_same_v<S, PulleyConstraintSettings>) {
+            CheckFinite(what, "body_point1", s.body_point1);
+            CheckFinite(what, "fixed_point1", s.fixed_point1);
+            CheckFinite(what, "body_point2", s.body_point2);
+            CheckFinite(what, "fixed_point2", s.fixed_point2);
+            CheckFinite(what, "ratio", s.ratio);
+            if (!(s.ratio > 0.0f)) {
+              Refuse(what, "ratio", "must be positive (got " + std::to_string(s.ratio) + ")");
+            }
+            CheckFinite(what, "min_length", s.min_length);
+            CheckFinite(what, "max_length", s.max_length);
+            if (s.min_length >= 0.0f && s.max_length >= 0.0f && s.min_length > s.max_length) {
+              Refuse(what, "min_length / max_length",
+                     "must be ordered, min <= max (got " + std::to_string(s.min_length) +
+                         " > " + std::to_string(s.max_length) + ")");
+            }
+            c.type = ConstraintType::kPulley;
+            c.offset = layout.Add<PulleyConstraintLanes>();
           } else {
             // Gear and rack-and-pinion: both bodies must be able to turn / move
             // (spec 1.5: the parts read motion properties of both bodies).

@@ -30,6 +30,8 @@ enum class ConstraintType : std::uint8_t {
   kGear,
   kRackAndPinion,
   kDistance,
+  kPulley,
+  kCone,
 };
 const char* ConstraintTypeName(ConstraintType type);
 

@@ -6,6 +6,8 @@
 #include <Eigen/Dense>
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <cfloat>
+#include <cmath>
 #include <utility>
 #include <type_traits>
 
@@ -192,6 +194,15 @@ void WriteLimit(Limit& limit, float min, float max, const SpringSettings& spring
   Fill(limit.geometry.spring, spring);
 }
 
+// Jolt's Vec3::GetNormalizedPerpendicular: (z, 0, -x) / |.| if |x| > |y|,
+// else (0, z, -y) / |.|.
+Vector NormalizedPerpendicular(const Vector& v) {
+  if (std::abs(v.x()) > std::abs(v.y())) {
+    return Vector(v.z(), 0.0, -v.x()) / std::sqrt(v.x() * v.x() + v.z() * v.z());
+  }
+  return Vector(0.0, v.z(), -v.y()) / std::sqrt(v.y() * v.y() + v.z() * v.z());
+}
+
 // Jolt's DistanceConstraint: a negative bound means the initial distance
 // (both: a rod of that length; min only: min(initial, max); max only:
 // max(initial, min)).
@@ -282,6 +293,33 @@ void WriteConstraint(const ConstraintPlan& c, const ConstraintSettings& settings
           const auto [min, max] = ResolveDistanceLimits(
               s, float((frames.World2(r2) - frames.World1(r1)).norm()));
           WriteLimit(At<LinearLimitLanes>(block, c.limit_offset), min, max, s.limits_spring);
+        } else if constexpr (std::is_same_v<S, ConeConstraintSettings>) {
+          auto& lanes = At<ConeConstraintLanes>(block, c.offset);
+          Fill(lanes.anchors.r1_local, frames.Point1(s.point1));
+          Fill(lanes.anchors.r2_local, frames.Point2(s.point2));
+          const Vector twist1 = frames.Axis1(s.twist_axis1);
+          Fill(lanes.twist_axis1_local, twist1);
+          Fill(lanes.twist_axis2_local, frames.Axis2(s.twist_axis2));
+          Fill(lanes.cos_half_cone_angle, std::cos(double(s.half_cone_angle)));
+          Fill(lanes.geometry.axis, NormalizedPerpendicular(twist1));  // Jolt's initial axis
+          Fill(lanes.geometry.min_lambda, 0.0);  // the row only pushes back into the cone
+          Fill(lanes.geometry.max_lambda, double(FLT_MAX));
+        } else if constexpr (std::is_same_v<S, PulleyConstraintSettings>) {
+          auto& lanes = At<PulleyConstraintLanes>(block, c.offset);
+          const Vector r1 = frames.Point1(s.body_point1), r2 = frames.Point2(s.body_point2);
+          const Vector f1 = ToVector(s.fixed_point1), f2 = ToVector(s.fixed_point2);
+          Fill(lanes.anchors.r1_local, r1);
+          Fill(lanes.anchors.r2_local, r2);
+          Fill(lanes.fixed_point1, f1);
+          Fill(lanes.fixed_point2, f2);
+          Fill(lanes.geometry.ratio, s.ratio);
+          Fill(lanes.geometry.n1, Vector(0, -1, 0));  // Jolt's initial normals
+          Fill(lanes.geometry.n2, Vector(0, -1, 0));
+          // Jolt: a negative bound takes the initial length.
+          const double initial =
+              (frames.World1(r1) - f1).norm() + double(s.ratio) * (frames.World2(r2) - f2).norm();
+          Fill(lanes.min_length, s.min_length < 0.0f ? float(initial) : s.min_length);
+          Fill(lanes.max_length, s.max_length < 0.0f ? float(initial) : s.max_length);
         } else if constexpr (std::is_same_v<S, GearConstraintSettings>) {
           auto& lanes = At<GearConstraintLanes>(block, c.offset);
           Fill(lanes.hinge_axis1_local, frames.Axis1(s.hinge_axis1));

@@ -21,12 +21,14 @@
 #define HWY_TARGET_INCLUDE "batch/step_kernels.cc"
 #include "hwy/foreach_target.h"  // IWYU pragma: keep
 
+#include "batch/cone_constraint-inl.h"
 #include "batch/constraint_block.h"
 #include "batch/distance_constraint-inl.h"
 #include "batch/fixed_constraint-inl.h"
 #include "batch/gear_constraint-inl.h"
 #include "batch/hinge_constraint-inl.h"
 #include "batch/point_constraint-inl.h"
+#include "batch/pulley_constraint-inl.h"
 #include "batch/slider_constraint-inl.h"
 #include "hwy/highway.h"
 #include "kernels/integration-inl.h"
@@ -44,6 +46,8 @@ inline void SetupConstraint(const ConstraintBlock& c, const StepScalars& step) {
     case ConstraintType::kGear: return GearConstraintSetup(c, step);
     case ConstraintType::kRackAndPinion: return RackAndPinionConstraintSetup(c, step);
     case ConstraintType::kDistance: return DistanceConstraintSetup(c, step);
+    case ConstraintType::kPulley: return PulleyConstraintSetup(c, step);
+    case ConstraintType::kCone: return ConeConstraintSetup(c, step);
   }
 }
 
@@ -56,6 +60,8 @@ inline void WarmStartConstraint(const ConstraintBlock& c, const StepScalars& ste
     case ConstraintType::kGear: return GearConstraintWarmStart(c, step);
     case ConstraintType::kRackAndPinion: return RackAndPinionConstraintWarmStart(c, step);
     case ConstraintType::kDistance: return DistanceConstraintWarmStart(c, step);
+    case ConstraintType::kPulley: return PulleyConstraintWarmStart(c, step);
+    case ConstraintType::kCone: return ConeConstraintWarmStart(c, step);
   }
 }
 
@@ -68,6 +74,8 @@ inline bool SolveConstraintVelocity(const ConstraintBlock& c) {
     case ConstraintType::kGear: return GearConstraintSolveVelocity(c);
     case ConstraintType::kRackAndPinion: return RackAndPinionConstraintSolveVelocity(c);
     case ConstraintType::kDistance: return DistanceConstraintSolveVelocity(c);
+    case ConstraintType::kPulley: return PulleyConstraintSolveVelocity(c);
+    case ConstraintType::kCone: return ConeConstraintSolveVelocity(c);
   }
   return false;
 }
@@ -83,6 +91,8 @@ inline bool SolveConstraintPosition(const StepPlan& plan, const ConstraintBlock&
     case ConstraintType::kRackAndPinion:
       return RackAndPinionConstraintSolvePosition(plan, c, step);
     case ConstraintType::kDistance: return DistanceConstraintSolvePosition(c, step);
+    case ConstraintType::kPulley: return PulleyConstraintSolvePosition(c, step);
+    case ConstraintType::kCone: return ConeConstraintSolvePosition(c, step);
   }
   return false;
 }

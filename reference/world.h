@@ -45,12 +45,14 @@
 #include "manyworlds/batch.h"
 #include "manyworlds/scene.h"
 #include "reference/body.h"
+#include "reference/cone_constraint.h"
 #include "reference/distance_constraint.h"
 #include "reference/fixed_constraint.h"
 #include "reference/gear_constraint.h"
 #include "reference/hinge_constraint.h"
 #include "reference/math.h"
 #include "reference/point_constraint.h"
+#include "reference/pulley_constraint.h"
 #include "reference/rack_and_pinion_constraint.h"
 #include "reference/slider_constraint.h"
 #include "reference/world_setup.h"
@@ -64,7 +66,7 @@ class World {
   using Constraint =
       std::variant<PointConstraint<T>, FixedConstraint<T>, HingeConstraint<T>,
                    SliderConstraint<T>, GearConstraint<T>, RackAndPinionConstraint<T>,
-                   DistanceConstraint<T>>;
+                   DistanceConstraint<T>, PulleyConstraint<T>, ConeConstraint<T>>;
 
   // Converts every body and constraint (world-space settings refer to the poses
   // in the scene). Throws std::invalid_argument for body or helper indices that do
@@ -168,6 +170,10 @@ class World {
       return SliderConstraint<T>(settings, body1, body2);
     } else if constexpr (std::is_same_v<Settings, DistanceConstraintSettings>) {
       return DistanceConstraint<T>(settings, body1, body2);
+    } else if constexpr (std::is_same_v<Settings, PulleyConstraintSettings>) {
+      return PulleyConstraint<T>(settings, body1, body2);
+    } else if constexpr (std::is_same_v<Settings, ConeConstraintSettings>) {
+      return ConeConstraint<T>(settings, body1, body2);
     } else {
       // Gear and rack-and-pinion read both bodies' motion properties (spec 1.5).
       if (body1.IsStatic() || body2.IsStatic()) {

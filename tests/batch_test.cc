@@ -187,6 +187,36 @@ INSTANTIATE_TEST_SUITE_P(
                        s.AddConstraint(rope);
                      },
                      {"'rope'", "max_distance"}},
+        BadSceneCase{"PulleyNonPositiveRatio",
+                     [](Scene& s) {
+                       PulleyConstraintSettings pulley;
+                       pulley.name = "hoist";
+                       pulley.body1 = 1;
+                       pulley.body2 = 0;
+                       pulley.ratio = 0;
+                       s.AddConstraint(pulley);
+                     },
+                     {"'hoist'", "ratio"}},
+        BadSceneCase{"ConeAngleBeyondPi",
+                     [](Scene& s) {
+                       ConeConstraintSettings cone;
+                       cone.name = "socket";
+                       cone.body1 = 0;
+                       cone.body2 = 1;
+                       cone.half_cone_angle = 3.5f;
+                       s.AddConstraint(cone);
+                     },
+                     {"'socket'", "half_cone_angle"}},
+        BadSceneCase{"ConeZeroTwistAxis",
+                     [](Scene& s) {
+                       ConeConstraintSettings cone;
+                       cone.name = "socket";
+                       cone.body1 = 0;
+                       cone.body2 = 1;
+                       cone.twist_axis2 = {0, 0, 0};
+                       s.AddConstraint(cone);
+                     },
+                     {"'socket'", "twist_axis2"}},
         BadSceneCase{"NonFiniteLimitsSpring",
                      [](Scene& s) { Hinge(s).limits_spring.damping = INFINITY; },
                      {"'elbow'", "limits_spring"}}),

@@ -520,6 +520,119 @@ TEST_P(JoltBehaviourTest, DistanceRopeFallsFreelyThenHolds) {
   EXPECT_MEASURED_NEAR("at rest", world->LinearVelocity(sphere).y(), 0.0, 1e-3);
 }
 
+// A block and tackle: body 1 (1 kg) and body 2 (3 kg) hang on vertical ropes
+// from two fixed points, L = l1 + 2 l2 fixed (min = max = the initial
+// length, so the row is an equality). Body 2 sinks by x while body 1 rises by
+// 2x; tension T on side 1 and 2T on side 2 give a2 = g (m2 - 2 m1) /
+// (m2 + 4 m1) = 9.81 / 7 m/s^2 down and a1 = 2 a2 up. One hard row per step
+// makes J v = 0 exactly, so the discrete velocities are n dt a: checked after
+// 0.5 s (body 1 has risen 0.35 m of its 1 m to the pulley) within 1e-4 m/s
+// (Jolt's slider-test tolerance), and the ropes stay vertical (x and z
+// exactly 0).
+TEST_P(JoltBehaviourTest, PulleyBlockAndTackleAccelerates) {
+  Scene scene;
+  BodySettings light = Sphere(0.1, {0, -1, 0});
+  light.mass = 1.0f;
+  BodySettings heavy = Sphere(0.1, {2, -1, 0});
+  heavy.mass = 3.0f;
+  const std::size_t body1 = scene.AddBody(light);
+  const std::size_t body2 = scene.AddBody(heavy);
+  PulleyConstraintSettings pulley;
+  pulley.body1 = body1;
+  pulley.body2 = body2;
+  pulley.body_point1 = {0, -1, 0};
+  pulley.fixed_point1 = {0, 0, 0};
+  pulley.body_point2 = {2, -1, 0};
+  pulley.fixed_point2 = {2, 0, 0};
+  pulley.ratio = 2.0f;
+  pulley.min_length = pulley.max_length = -1.0f;
+  scene.AddConstraint(pulley);
+  const std::unique_ptr<Stepper> world = Make(scene);
+  Simulate(*world, 30);
+  const double a2 = 9.81 * (3.0 - 2.0) / (3.0 + 4.0);
+  EXPECT_VEC_NEAR("body 2 velocity", world->LinearVelocity(body2), Vec3d(0, -30 * kDt * a2, 0),
+                  1e-4);
+  EXPECT_VEC_NEAR("body 1 velocity", world->LinearVelocity(body1),
+                  Vec3d(0, 2 * 30 * kDt * a2, 0), 1e-4);
+  EXPECT_EQ(world->Position(body1).x(), 0.0);
+  EXPECT_EQ(world->Position(body2).z(), 0.0);
+}
+
+// A pulley rope that starts slack: a sphere 0.5 m below its fixed point on a
+// rope of at most 1.5 m whose other end is tied to the static world 0.5 m
+// from its fixed point. Free fall until the rope is taut (15 steps), then it
+// hangs 1 m below the fixed point (Baumgarte residual of one step of gravity,
+// 2e-3 m) and comes to rest.
+TEST_P(JoltBehaviourTest, PulleyRopeFallsFreelyThenHolds) {
+  Scene scene;
+  const std::size_t world_body = scene.AddBody(FixedToWorld());
+  const std::size_t sphere = scene.AddBody(Sphere(0.5, {0, -0.5, 0}));
+  PulleyConstraintSettings pulley;
+  pulley.body1 = sphere;
+  pulley.body2 = world_body;
+  pulley.body_point1 = {0, -0.5, 0};
+  pulley.fixed_point1 = {0, 0, 0};
+  pulley.body_point2 = {1, 0, 0};
+  pulley.fixed_point2 = {0.5, 0, 0};
+  pulley.max_length = 1.5f;
+  scene.AddConstraint(pulley);
+  const std::unique_ptr<Stepper> world = Make(scene);
+  Trajectory free_fall{-0.5, 0.0};
+  for (int step = 0; step < 15; ++step) {
+    world->Step(StepSettings{});
+    free_fall.Step(1, [](double) { return -9.81 * kDt; });
+    ASSERT_MEASURED_NEAR("free fall", world->Position(sphere).y(), free_fall.x, 1e-5)
+        << "step " << step;
+  }
+  for (int step = 15; step < 180; ++step) world->Step(StepSettings{});
+  EXPECT_MEASURED_NEAR("hanging", world->Position(sphere).y(), -1.0, 2e-3);
+  EXPECT_MEASURED_NEAR("at rest", world->LinearVelocity(sphere).y(), 0.0, 1e-3);
+}
+
+// A pendulum (1 m rod, COM 1 m below the joint) kicked sideways at 3 m/s on a
+// 0.3 rad cone: it swings out to the cone (the maximum angle reaches it) and
+// never further than one step of its swing rate past it (3 rad/s x 1/60 s =
+// 0.05 rad: the velocity row stops the approach, the cosine-error position
+// row pulls the rest back). The anchor: when the cone stops the swing, its
+// purely angular impulse turns the rod about its centre of mass and the 10
+// Gauss-Seidel sweeps leave the point row unconverged, so the anchor opens
+// by centimetres (2.2 cm measured, the same on every stepper to 1e-7);
+// bounded here by one step of the swing, 3 m/s x 1/60 s = 5 cm (a broken
+// point row drifts by that every step), and closed again by Baumgarte to
+// within 1 mm before the next impact.
+TEST_P(JoltBehaviourTest, ConeKeepsAPendulumInsideTheCone) {
+  constexpr double kHalfCone = 0.3;
+  Scene scene;
+  const std::size_t world_body = scene.AddBody(FixedToWorld());
+  BodySettings rod = Box({0.05f, 0.5f, 0.05f}, {0, -1, 0});
+  rod.linear_velocity = {3, 0, 0};
+  rod.angular_velocity = {0, 0, 3};  // the rod turns with its swing
+  const std::size_t pendulum = scene.AddBody(rod);
+  ConeConstraintSettings cone;
+  cone.body1 = world_body;
+  cone.body2 = pendulum;
+  cone.twist_axis1 = cone.twist_axis2 = {0, -1, 0};
+  cone.half_cone_angle = float(kHalfCone);
+  scene.AddConstraint(cone);
+  const std::unique_ptr<Stepper> world = Make(scene);
+  double largest_angle = 0.0, smallest_gap_of_window = 1.0;
+  for (int step = 0; step < 120; ++step) {
+    world->Step(StepSettings{});
+    const Vec3d axis = world->Rotation(pendulum) * Vec3d(0, -1, 0);
+    const double angle = std::acos(std::clamp(-axis.y(), -1.0, 1.0));
+    largest_angle = std::max(largest_angle, angle);
+    ASSERT_LT(angle, kHalfCone + 0.05) << "step " << step;
+    const Vec3d anchor = world->Position(pendulum) + world->Rotation(pendulum) * Vec3d(0, 1, 0);
+    ASSERT_LT(anchor.norm(), 0.05) << "step " << step;
+    smallest_gap_of_window = std::min(smallest_gap_of_window, anchor.norm());
+    if (step % 30 == 29) {
+      EXPECT_LT(smallest_gap_of_window, 1e-3) << "the anchor did not close by step " << step;
+      smallest_gap_of_window = 1.0;
+    }
+  }
+  EXPECT_GT(largest_angle, kHalfCone - 0.01) << "the pendulum never reached the cone";
+}
+
 // ====================================================== hinge (Jolt's test)
 
 // Rotation angle of q about +Y (Jolt's test: GetAxisAngle, negated when the axis

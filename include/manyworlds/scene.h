@@ -160,6 +160,37 @@ struct DistanceConstraintSettings {
   SpringSettings limits_spring;  // frequency_or_stiffness > 0: soft limits
 };
 
+// A rope from body 1's point over fixed_point1 and fixed_point2 (world
+// space, fixed) to body 2's point: L = |p1 - f1| + ratio |p2 - f2| stays in
+// [min_length, max_length] (spec 3, Pulley). ratio > 1 is a block and tackle
+// on body 2's side. A negative length means the initial length.
+struct PulleyConstraintSettings {
+  std::string name;
+  std::size_t body1 = 0, body2 = 0;
+  ConstraintSpace space = ConstraintSpace::kWorldSpace;  // of body_point1/2 only
+  Float3 body_point1{0, 0, 0};
+  Float3 fixed_point1{0, 0, 0};  // world space
+  Float3 body_point2{0, 0, 0};
+  Float3 fixed_point2{0, 0, 0};  // world space
+  float ratio = 1.0f;
+  float min_length = 0.0f;   // m
+  float max_length = -1.0f;  // m; negative: the initial length
+};
+
+// A ball joint whose twist axes may part by at most half_cone_angle (spec 3,
+// Cone): body 1's point1 and body 2's point2 coincide, and the angle between
+// twist_axis1 (body 1) and twist_axis2 (body 2) stays within [0, half angle].
+struct ConeConstraintSettings {
+  std::string name;
+  std::size_t body1 = 0, body2 = 0;
+  ConstraintSpace space = ConstraintSpace::kWorldSpace;
+  Float3 point1{0, 0, 0};
+  Float3 twist_axis1{1, 0, 0};
+  Float3 point2{0, 0, 0};
+  Float3 twist_axis2{1, 0, 0};
+  float half_cone_angle = 0.0f;  // rad, in [0, pi]
+};
+
 // No constraint index: the gear / rack has no position correction.
 inline constexpr std::size_t kNoConstraint = static_cast<std::size_t>(-1);
 
@@ -192,7 +223,8 @@ struct RackAndPinionConstraintSettings {
 using ConstraintSettings =
     std::variant<PointConstraintSettings, FixedConstraintSettings, HingeConstraintSettings,
                  SliderConstraintSettings, GearConstraintSettings,
-                 RackAndPinionConstraintSettings, DistanceConstraintSettings>;
+                 RackAndPinionConstraintSettings, DistanceConstraintSettings,
+                 PulleyConstraintSettings, ConeConstraintSettings>;
 
 // The world every batch copies. Constraints are solved in the order they were
 // added (Jolt's order for equal priorities).

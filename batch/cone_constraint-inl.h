@@ -1,0 +1,91 @@
+// Cone constraint across worlds (spec 3, Cone): a point part, then one angle
+// row that keeps body 2's twist axis within a cone around body 1's.
+//
+//   t1 = R1 t1_local, t2 = R2 t2_local, cos(theta) = t1 . t2
+//   cos(theta) < cos(alpha):  axis a = (t2 x t1) / |t2 x t1| (the previous a
+//                             when the cross product is zero; persistent),
+//                             angle row on a, impulse in [0, inf)
+//   otherwise:                angle row deactivated
+// A positive impulse turns body 2 about a, which moves t2 towards t1.
+// Velocity: point, then the angle row. Position: the point part recomputed
+// and stepped, then the cone row recomputed at the new rotations (which may
+// deactivate it) and stepped with C = cos(theta) - cos(alpha), a cosine
+// difference fed to an angle row (Jolt's approximation, kept).
+
+#if defined(MANYWORLDS_BATCH_CONE_CONSTRAINT_INL_H_) == defined(HWY_TARGET_TOGGLE)
+#ifdef MANYWORLDS_BATCH_CONE_CONSTRAINT_INL_H_
+#undef MANYWORLDS_BATCH_CONE_CONSTRAINT_INL_H_
+#else
+#define MANYWORLDS_BATCH_CONE_CONSTRAINT_INL_H_
+#endif
+
+#include <cfloat>
+
+#include "batch/constraint_block.h"
+#include "kernels/angle-inl.h"
+#include "kernels/point-inl.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace manyworlds {
+namespace HWY_NAMESPACE {
+
+// cos(theta), the rotation axis and the cone row at the current rotations;
+// outside the cone the row's error is cos(theta) - cos(alpha), inside it is
+// deactivated (error 0, so the position phase takes no step there).
+inline void ConeRotationProperties(const ConstraintBlock& c) {
+  auto& s = c.Main<ConeConstraintLanes>();
+  LaneFlags inside;
+  ForEachChunk([&](std::size_t offset) {
+    const Vec3 t1 = Rotate(LoadQuat(c.bodies.body1->rotation, offset),
+                           LoadVec3(s.twist_axis1_local, offset));
+    const Vec3 t2 = Rotate(LoadQuat(c.bodies.body2->rotation, offset),
+                           LoadVec3(s.twist_axis2_local, offset));
+    const LaneVec cos_theta = Dot(t1, t2);
+    const LaneVec cos_alpha = Load(s.cos_half_cone_angle, offset);
+    const LaneMask outside = hn::Lt(cos_theta, cos_alpha);
+    const Vec3 cross = Cross(t2, t1);
+    const LaneVec length = hn::Sqrt(LengthSquared(cross));
+    const LaneMask turns = hn::And(outside, hn::Gt(length, Zero()));
+    const LaneVec divisor = hn::IfThenElse(turns, length, Splat(1.0f));
+    const Vec3 unit{hn::Div(cross.x, divisor), hn::Div(cross.y, divisor),
+                    hn::Div(cross.z, divisor)};
+    StoreVec3(Select(turns, unit, LoadVec3(s.geometry.axis, offset)), s.geometry.axis, offset);
+    Store(cos_theta, s.cos_theta, offset);
+    Store(hn::IfThenElseZero(outside, hn::Sub(cos_theta, cos_alpha)), s.geometry.error, offset);
+    StoreFlags(hn::Not(outside), inside, offset);
+  });
+  AngleCalculateProperties(c.bodies, s.geometry, s.angle);
+  AngleDeactivate(s.angle, inside);
+}
+
+inline void ConeConstraintSetup(const ConstraintBlock& c, const StepScalars&) {
+  auto& s = c.Main<ConeConstraintLanes>();
+  PointCalculateProperties(c.bodies, s.anchors, s.point);
+  ConeRotationProperties(c);
+}
+
+inline void ConeConstraintWarmStart(const ConstraintBlock& c, const StepScalars& step) {
+  auto& s = c.Main<ConeConstraintLanes>();
+  PointWarmStart(c.bodies, s.point, step.warm_start_ratio);
+  AngleWarmStart(c.bodies, s.angle, step.warm_start_ratio);
+}
+
+inline bool ConeConstraintSolveVelocity(const ConstraintBlock& c) {
+  auto& s = c.Main<ConeConstraintLanes>();
+  const bool point = PointSolveVelocity(c.bodies, s.point);
+  return AngleSolveVelocity(c.bodies, s.geometry, s.angle) || point;
+}
+
+inline bool ConeConstraintSolvePosition(const ConstraintBlock& c, const StepScalars& step) {
+  auto& s = c.Main<ConeConstraintLanes>();
+  PointCalculateProperties(c.bodies, s.anchors, s.point);
+  const bool point = PointSolvePosition(c.bodies, s.point, step.baumgarte);
+  ConeRotationProperties(c);
+  return AngleSolvePosition(c.bodies, s.geometry, s.angle, step.baumgarte) || point;
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace manyworlds
+HWY_AFTER_NAMESPACE();
+
+#endif  // MANYWORLDS_BATCH_CONE_CONSTRAINT_INL_H_
