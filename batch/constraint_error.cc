@@ -86,6 +86,48 @@ double SliderPosition(const Pose& b1, const Pose& b2, const LaneReader& read,
   return u.dot(slider);
 }
 
+// How far the relative rotation q of a swing-twist joint (body 2's frame in
+// body 1's) lies outside its limits, in rad: twist about X, and swing per axis
+// (pyramid, or a locked or free axis) or radially beyond the ellipse (cone).
+double SwingTwistViolation(Rotation q, const SwingTwistConfig& config, const LaneReader& read,
+                           const SwingTwistLimitLanes& limits) {
+  if (q.w() < 0.0) q.coeffs() = -q.coeffs();
+  const double s = std::sqrt(q.w() * q.w() + q.x() * q.x());
+  double twist = 0.0, swing_y = q.y(), swing_z = q.z(), swing_w = q.w();
+  if (s > 0.0) {
+    twist = 2.0 * std::atan2(q.x(), q.w());
+    swing_y = (q.w() * q.y() - q.x() * q.z()) / s;
+    swing_z = (q.w() * q.z() + q.x() * q.y()) / s;
+    swing_w = s;
+  }
+  const auto axis_violation = [&](AxisLimitKind kind, double angle, const AxisLimitLanes& l) {
+    if (kind == AxisLimitKind::kFree) return 0.0;
+    if (kind == AxisLimitKind::kLocked) return std::abs(angle);
+    return LimitViolation(angle, 2.0 * read(l.half_min), 2.0 * read(l.half_max));
+  };
+  double error = axis_violation(config.twist, Fold(twist), limits.twist);
+  const bool cone = config.swing_type == SwingType::kCone &&
+                    config.swing_y == AxisLimitKind::kLimited &&
+                    config.swing_z == AxisLimitKind::kLimited;
+  if (!cone) {
+    error = std::max(error, axis_violation(config.swing_y, 2.0 * std::atan2(swing_y, swing_w),
+                                           limits.swing_y));
+    return std::max(error, axis_violation(config.swing_z, 2.0 * std::atan2(swing_z, swing_w),
+                                          limits.swing_z));
+  }
+  // Cone: the ellipse (y/a)^2 + (z/b)^2 <= 1 with a, b the sines of the half
+  // cone angles; outside, the swing angle beyond the ellipse's along (y, z).
+  const double a = read(limits.swing_y.sin_half_max), b = read(limits.swing_z.sin_half_max);
+  const double radius = std::hypot(swing_y, swing_z);
+  if (radius == 0.0 || (swing_y / a) * (swing_y / a) + (swing_z / b) * (swing_z / b) <= 1.0) {
+    return error;
+  }
+  const double cos_phi = swing_y / radius, sin_phi = swing_z / radius;
+  const double allowed = 1.0 / std::hypot(cos_phi / a, sin_phi / b);
+  return std::max(error, 2.0 * (std::asin(std::min(1.0, radius)) -
+                                std::asin(std::min(1.0, allowed))));
+}
+
 }  // namespace
 
 double ConstraintErrorOfLane(const StepPlan& plan, const std::byte* block, std::size_t lane,
@@ -167,6 +209,14 @@ double ConstraintErrorOfLane(const StepPlan& plan, const std::byte* block, std::
       const double angle = std::atan2(t1.cross(t2).norm(), t1.dot(t2));
       const double half_cone = std::acos(std::clamp(read(s.cos_half_cone_angle), -1.0, 1.0));
       return std::max(AnchorError(b1, b2, read, s.anchors), std::max(0.0, angle - half_cone));
+    }
+    case ConstraintType::kSwingTwist: {
+      const auto& s = read.at<SwingTwistConstraintLanes>(c.offset);
+      const Rotation frame1 = b1.q * read(s.frames.constraint_to_body1);
+      const Rotation frame2 = b2.q * read(s.frames.constraint_to_body2);
+      return std::max(AnchorError(b1, b2, read, s.anchors),
+                      SwingTwistViolation((frame1.conjugate() * frame2).normalized(),
+                                          c.swing_twist, read, s.limits));
     }
     case ConstraintType::kPulley: {
       const auto& s = read.at<PulleyConstraintLanes>(c.offset);

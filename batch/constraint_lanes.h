@@ -17,6 +17,7 @@
 #include "kernels/point.h"
 #include "kernels/rack_and_pinion.h"
 #include "kernels/rotation_euler.h"
+#include "kernels/swing_twist.h"
 #include "manyworlds/lanes.h"
 
 namespace manyworlds {
@@ -136,6 +137,15 @@ struct ConeConstraintLanes {
   LaneArray cos_theta;  // t1 . t2 of the last properties computation
   PointLanes point;
   AngleLanes angle;
+};
+
+// ---- Swing-twist: the swing-twist part (limits), then a point part.
+struct SwingTwistConstraintLanes {
+  PointGeometry anchors;
+  SwingTwistGeometry frames;       // constraint frame to body 1 / body 2 (parameters)
+  SwingTwistLimitLanes limits;     // per world (parameters)
+  SwingTwistLanes swing_twist;
+  PointLanes point;
 };
 
 }  // namespace manyworlds

@@ -28,6 +28,7 @@ const char* SettingsTypeName(const ConstraintSettings& settings) {
         if constexpr (std::is_same_v<S, DistanceConstraintSettings>) return "distance";
         if constexpr (std::is_same_v<S, PulleyConstraintSettings>) return "pulley";
         if constexpr (std::is_same_v<S, ConeConstraintSettings>) return "cone";
+        if constexpr (std::is_same_v<S, SwingTwistConstraintSettings>) return "swing_twist";
       },
       settings);
 }
@@ -188,6 +189,7 @@ const char* ConstraintTypeName(ConstraintType type) {
     case ConstraintType::kDistance: return "distance";
     case ConstraintType::kPulley: return "pulley";
     case ConstraintType::kCone: return "cone";
+    case ConstraintType::kSwingTwist: return "swing_twist";
   }
   return "unknown";
 }
@@ -244,6 +246,9 @@ std::string ConstraintPlan::PartsInOrder() const {
     case ConstraintType::kDistance: return "axis(" + limit_row + ")";
     case ConstraintType::kPulley: return "independent_axis(limits)";
     case ConstraintType::kCone: return "point angle(cone limit)";
+    case ConstraintType::kSwingTwist:
+      return std::string("swing_twist(") +
+             (swing_twist.swing_type == SwingType::kCone ? "cone" : "pyramid") + ") point";
   }
   return "";
 }
@@ -421,6 +426,36 @@ StepPlan CompilePlan(const Scene& scene) {
             c.limit_offset = layout.Add<LinearLimitLanes>();
             c.soft_limits = s.limits_spring.HasStiffness();
             c.limit_spring_mode = s.limits_spring.mode;
+          } else if constexpr (std::is_same_v<S, SwingTwistConstraintSettings>) {
+            CheckFinite(what, "point1", s.point1);
+            CheckFinite(what, "point2", s.point2);
+            CheckAxis(what, "twist_axis1", s.twist_axis1);
+            CheckAxis(what, "plane_axis1", s.plane_axis1);
+            CheckAxis(what, "twist_axis2", s.twist_axis2);
+            CheckAxis(what, "plane_axis2", s.plane_axis2);
+            CheckPerpendicular(what, "twist_axis1", s.twist_axis1, "plane_axis1", s.plane_axis1);
+            CheckPerpendicular(what, "twist_axis2", s.twist_axis2, "plane_axis2", s.plane_axis2);
+            const auto in_range = [&](const char* field, float x, float low) {
+              if (!(x >= low && x <= kPi)) {
+                Refuse(what, field, "must lie in [" + std::string(low < 0.0f ? "-pi" : "0") +
+                                        ", pi] (got " + std::to_string(x) + ")");
+              }
+            };
+            in_range("normal_half_cone_angle", s.normal_half_cone_angle, 0.0f);
+            in_range("plane_half_cone_angle", s.plane_half_cone_angle, 0.0f);
+            in_range("twist_min_angle", s.twist_min_angle, -kPi);
+            in_range("twist_max_angle", s.twist_max_angle, -kPi);
+            if (s.twist_min_angle > s.twist_max_angle) {
+              Refuse(what, "twist_min_angle / twist_max_angle", "must be ordered, min <= max");
+            }
+            c.type = ConstraintType::kSwingTwist;
+            c.offset = layout.Add<SwingTwistConstraintLanes>();
+            c.swing_twist.swing_type = s.swing_type;
+            c.swing_twist.twist = ClassifyAxisLimit(s.twist_min_angle, s.twist_max_angle);
+            c.swing_twist.swing_y =
+                ClassifyAxisLimit(-s.plane_half_cone_angle, s.plane_half_cone_angle);
+            c.swing_twist.swing_z =
+                ClassifyAxisLimit(-s.normal_half_cone_angle, s.normal_half_cone_angle);
           } else if constexpr (std::is_same_v<S, ConeConstraintSettings>) {
             CheckFinite(what, "point1", s.point1);
             CheckFinite(what, "point2", s.point2);

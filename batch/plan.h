@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "kernels/swing_twist.h"  // SwingTwistConfig
 #include "manyworlds/batch.h"
 #include "manyworlds/motion_type.h"
 #include "manyworlds/scene.h"
@@ -32,6 +33,7 @@ enum class ConstraintType : std::uint8_t {
   kDistance,
   kPulley,
   kCone,
+  kSwingTwist,
 };
 const char* ConstraintTypeName(ConstraintType type);
 
@@ -60,6 +62,8 @@ struct ConstraintPlan {
   // Gear: the hinges of body 1 and 2; rack-and-pinion: hinge and slider.
   // Position correction runs only when both are given.
   std::size_t helper1 = kNoConstraint, helper2 = kNoConstraint;
+  // Swing-twist: which axes are locked, limited or free; cone or pyramid.
+  SwingTwistConfig swing_twist{};
 
   bool has_limits() const { return limit_offset != kAbsent; }
   bool has_motor() const { return motor_offset != kAbsent; }

@@ -194,6 +194,18 @@ void WriteLimit(Limit& limit, float min, float max, const SpringSettings& spring
   Fill(limit.geometry.spring, spring);
 }
 
+// Jolt's SwingTwistConstraintPart::SetLimits for one axis: the half angles
+// always; sine and cosine of them where limited, (0, 1) locked, (-1/1, 0) free.
+void WriteAxisLimit(AxisLimitLanes& lanes, AxisLimitKind kind, double min, double max) {
+  Fill(lanes.half_min, 0.5 * min);
+  Fill(lanes.half_max, 0.5 * max);
+  const bool limited = kind == AxisLimitKind::kLimited, free = kind == AxisLimitKind::kFree;
+  Fill(lanes.sin_half_min, limited ? std::sin(0.5 * min) : free ? -1.0 : 0.0);
+  Fill(lanes.sin_half_max, limited ? std::sin(0.5 * max) : free ? 1.0 : 0.0);
+  Fill(lanes.cos_half_min, limited ? std::cos(0.5 * min) : free ? 0.0 : 1.0);
+  Fill(lanes.cos_half_max, limited ? std::cos(0.5 * max) : free ? 0.0 : 1.0);
+}
+
 // Jolt's Vec3::GetNormalizedPerpendicular: (z, 0, -x) / |.| if |x| > |y|,
 // else (0, z, -y) / |.|.
 Vector NormalizedPerpendicular(const Vector& v) {
@@ -293,6 +305,21 @@ void WriteConstraint(const ConstraintPlan& c, const ConstraintSettings& settings
           const auto [min, max] = ResolveDistanceLimits(
               s, float((frames.World2(r2) - frames.World1(r1)).norm()));
           WriteLimit(At<LinearLimitLanes>(block, c.limit_offset), min, max, s.limits_spring);
+        } else if constexpr (std::is_same_v<S, SwingTwistConstraintSettings>) {
+          auto& lanes = At<SwingTwistConstraintLanes>(block, c.offset);
+          Fill(lanes.anchors.r1_local, frames.Point1(s.point1));
+          Fill(lanes.anchors.r2_local, frames.Point2(s.point2));
+          // Constraint frame: X = twist, Y = plane x twist, Z = plane.
+          const Vector twist1 = frames.Axis1(s.twist_axis1), plane1 = frames.Axis1(s.plane_axis1);
+          const Vector twist2 = frames.Axis2(s.twist_axis2), plane2 = frames.Axis2(s.plane_axis2);
+          Fill(lanes.frames.constraint_to_body1, FrameRotation(twist1, plane1.cross(twist1)));
+          Fill(lanes.frames.constraint_to_body2, FrameRotation(twist2, plane2.cross(twist2)));
+          WriteAxisLimit(lanes.limits.twist, c.swing_twist.twist, s.twist_min_angle,
+                         s.twist_max_angle);
+          WriteAxisLimit(lanes.limits.swing_y, c.swing_twist.swing_y, -s.plane_half_cone_angle,
+                         s.plane_half_cone_angle);
+          WriteAxisLimit(lanes.limits.swing_z, c.swing_twist.swing_z, -s.normal_half_cone_angle,
+                         s.normal_half_cone_angle);
         } else if constexpr (std::is_same_v<S, ConeConstraintSettings>) {
           auto& lanes = At<ConeConstraintLanes>(block, c.offset);
           Fill(lanes.anchors.r1_local, frames.Point1(s.point1));

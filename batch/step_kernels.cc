@@ -30,6 +30,7 @@
 #include "batch/point_constraint-inl.h"
 #include "batch/pulley_constraint-inl.h"
 #include "batch/slider_constraint-inl.h"
+#include "batch/swing_twist_constraint-inl.h"
 #include "hwy/highway.h"
 #include "kernels/integration-inl.h"
 
@@ -48,6 +49,7 @@ inline void SetupConstraint(const ConstraintBlock& c, const StepScalars& step) {
     case ConstraintType::kDistance: return DistanceConstraintSetup(c, step);
     case ConstraintType::kPulley: return PulleyConstraintSetup(c, step);
     case ConstraintType::kCone: return ConeConstraintSetup(c, step);
+    case ConstraintType::kSwingTwist: return SwingTwistConstraintSetup(c, step);
   }
 }
 
@@ -62,6 +64,7 @@ inline void WarmStartConstraint(const ConstraintBlock& c, const StepScalars& ste
     case ConstraintType::kDistance: return DistanceConstraintWarmStart(c, step);
     case ConstraintType::kPulley: return PulleyConstraintWarmStart(c, step);
     case ConstraintType::kCone: return ConeConstraintWarmStart(c, step);
+    case ConstraintType::kSwingTwist: return SwingTwistConstraintWarmStart(c, step);
   }
 }
 
@@ -76,6 +79,7 @@ inline bool SolveConstraintVelocity(const ConstraintBlock& c) {
     case ConstraintType::kDistance: return DistanceConstraintSolveVelocity(c);
     case ConstraintType::kPulley: return PulleyConstraintSolveVelocity(c);
     case ConstraintType::kCone: return ConeConstraintSolveVelocity(c);
+    case ConstraintType::kSwingTwist: return SwingTwistConstraintSolveVelocity(c);
   }
   return false;
 }
@@ -93,6 +97,7 @@ inline bool SolveConstraintPosition(const StepPlan& plan, const ConstraintBlock&
     case ConstraintType::kDistance: return DistanceConstraintSolvePosition(c, step);
     case ConstraintType::kPulley: return PulleyConstraintSolvePosition(c, step);
     case ConstraintType::kCone: return ConeConstraintSolvePosition(c, step);
+    case ConstraintType::kSwingTwist: return SwingTwistConstraintSolvePosition(c, step);
   }
   return false;
 }

@@ -10,15 +10,10 @@
 #include "kernels/body_lanes.h"
 #include "kernels/kernel_table.h"
 #include "manyworlds/lanes.h"
+#include "manyworlds/swing_type.h"  // SwingType
 
 namespace manyworlds {
 
-// How the swing (rotation about an axis in the constraint's YZ plane) is
-// limited when both swing axes have a range (Jolt's ESwingType).
-enum class SwingType : std::uint8_t {
-  kCone,     // ellipse in (sin(swing_y/2), sin(swing_z/2)); symmetric limits only
-  kPyramid,  // box in half-angle space; asymmetric limits allowed
-};
 
 // What one axis (twist X, swing Y, swing Z) allows.
 enum class AxisLimitKind : std::uint8_t {

@@ -55,6 +55,7 @@
 #include "reference/pulley_constraint.h"
 #include "reference/rack_and_pinion_constraint.h"
 #include "reference/slider_constraint.h"
+#include "reference/swing_twist_constraint.h"
 #include "reference/world_setup.h"
 
 namespace manyworlds::reference {
@@ -66,7 +67,8 @@ class World {
   using Constraint =
       std::variant<PointConstraint<T>, FixedConstraint<T>, HingeConstraint<T>,
                    SliderConstraint<T>, GearConstraint<T>, RackAndPinionConstraint<T>,
-                   DistanceConstraint<T>, PulleyConstraint<T>, ConeConstraint<T>>;
+                   DistanceConstraint<T>, PulleyConstraint<T>, ConeConstraint<T>,
+                   SwingTwistConstraint<T>>;
 
   // Converts every body and constraint (world-space settings refer to the poses
   // in the scene). Throws std::invalid_argument for body or helper indices that do
@@ -174,6 +176,8 @@ class World {
       return PulleyConstraint<T>(settings, body1, body2);
     } else if constexpr (std::is_same_v<Settings, ConeConstraintSettings>) {
       return ConeConstraint<T>(settings, body1, body2);
+    } else if constexpr (std::is_same_v<Settings, SwingTwistConstraintSettings>) {
+      return SwingTwistConstraint<T>(settings, body1, body2);
     } else {
       // Gear and rack-and-pinion read both bodies' motion properties (spec 1.5).
       if (body1.IsStatic() || body2.IsStatic()) {

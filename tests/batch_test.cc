@@ -217,6 +217,27 @@ INSTANTIATE_TEST_SUITE_P(
                        s.AddConstraint(cone);
                      },
                      {"'socket'", "twist_axis2"}},
+        BadSceneCase{"SwingTwistTwistInverted",
+                     [](Scene& s) {
+                       SwingTwistConstraintSettings joint;
+                       joint.name = "hip";
+                       joint.body1 = 0;
+                       joint.body2 = 1;
+                       joint.twist_min_angle = 0.5f;
+                       joint.twist_max_angle = -0.5f;
+                       s.AddConstraint(joint);
+                     },
+                     {"'hip'", "twist_min_angle"}},
+        BadSceneCase{"SwingTwistPlaneNotPerpendicular",
+                     [](Scene& s) {
+                       SwingTwistConstraintSettings joint;
+                       joint.name = "hip";
+                       joint.body1 = 0;
+                       joint.body2 = 1;
+                       joint.plane_axis2 = joint.twist_axis2;
+                       s.AddConstraint(joint);
+                     },
+                     {"'hip'", "twist_axis2", "plane_axis2"}},
         BadSceneCase{"NonFiniteLimitsSpring",
                      [](Scene& s) { Hinge(s).limits_spring.damping = INFINITY; },
                      {"'elbow'", "limits_spring"}}),

@@ -633,6 +633,78 @@ TEST_P(JoltBehaviourTest, ConeKeepsAPendulumInsideTheCone) {
   EXPECT_GT(largest_angle, kHalfCone - 0.01) << "the pendulum never reached the cone";
 }
 
+// Swing and twist of body 2's constraint frame relative to body 1's (frames
+// X = twist, Z = plane, Y = Z x X): Jolt's GetSwingTwist of q with w >= 0,
+// as angles (twist about X; swing about Y and Z as the pyramid measures them).
+struct SwingTwistAngles {
+  double twist, swing_y, swing_z;
+};
+SwingTwistAngles MeasureSwingTwist(const Quatd& frame1, const Quatd& frame2) {
+  Quatd q = frame1.conjugate() * frame2;
+  if (q.w() < 0) q.coeffs() = -q.coeffs();
+  const double s = std::sqrt(q.w() * q.w() + q.x() * q.x());
+  if (s == 0.0) return {0.0, 2 * std::atan2(q.y(), 0.0), 2 * std::atan2(q.z(), 0.0)};
+  const double y = (q.w() * q.y() - q.x() * q.z()) / s, z = (q.w() * q.z() + q.x() * q.y()) / s;
+  return {2 * std::atan2(q.x(), q.w()), 2 * std::atan2(y, s), 2 * std::atan2(z, s)};
+}
+
+// A limb (0.8 m box, COM 0.4 m below the joint) on a swing-twist joint to the
+// world, spun about all three axes (3, 4 and 2 rad/s) with gravity off, for
+// both swing types: swing about Y within +-0.3 rad, about Z within +-0.5 rad
+// (the pyramid per axis; the cone inside its ellipse, so also per axis) and
+// twist within [-0.2, 0.4] rad, each exceeded by at most one step of the
+// spin (4 rad/s x 1/60 s = 0.07 rad) before the rows stop it; every limit is
+// reached that the spin drives into (within 0.02 rad; the twist only turns
+// towards its min); the anchor holds
+// within one step of the swing (the COM moves 4 x 0.4 x 1/60 = 2.7 cm).
+TEST_P(JoltBehaviourTest, SwingTwistKeepsALimbWithinItsLimits) {
+  for (const SwingType type : {SwingType::kPyramid, SwingType::kCone}) {
+    SCOPED_TRACE(type == SwingType::kCone ? "cone" : "pyramid");
+    Scene scene;
+    const std::size_t world_body = scene.AddBody(FixedToWorld());
+    BodySettings limb = Box({0.05f, 0.4f, 0.05f}, {0, -0.4f, 0});
+    limb.angular_velocity = {3, 4, 2};
+    const std::size_t body = scene.AddBody(limb);
+    SwingTwistConstraintSettings joint;
+    joint.body1 = world_body;
+    joint.body2 = body;
+    joint.twist_axis1 = joint.twist_axis2 = {0, -1, 0};
+    joint.plane_axis1 = joint.plane_axis2 = {0, 0, 1};
+    joint.swing_type = type;
+    joint.plane_half_cone_angle = 0.3f;
+    joint.normal_half_cone_angle = 0.5f;
+    joint.twist_min_angle = -0.2f;
+    joint.twist_max_angle = 0.4f;
+    scene.AddConstraint(joint);
+    const std::unique_ptr<Stepper> world = Make(scene);
+    reference::Mat33<double> frame;  // X = twist = -Y, Y = Z x X = +X, Z = plane = +Z
+    frame << Vec3d(0, -1, 0), Vec3d(1, 0, 0), Vec3d(0, 0, 1);
+    const Quatd c(frame);
+    constexpr double kStep = 4.0 / 60.0;
+    SwingTwistAngles lowest{0, 0, 0}, highest{0, 0, 0};
+    StepSettings settings;
+    settings.gravity = {0, 0, 0};
+    for (int step = 0; step < 180; ++step) {
+      world->Step(settings);
+      const SwingTwistAngles a = MeasureSwingTwist(c, world->Rotation(body) * c);
+      ASSERT_GT(a.twist, -0.2 - kStep) << "step " << step;
+      ASSERT_LT(a.twist, 0.4 + kStep) << "step " << step;
+      ASSERT_LT(std::abs(a.swing_y), 0.3 + kStep) << "step " << step;
+      ASSERT_LT(std::abs(a.swing_z), 0.5 + kStep) << "step " << step;
+      const Vec3d anchor = world->Position(body) + world->Rotation(body) * Vec3d(0, 0.4, 0);
+      ASSERT_LT(anchor.norm(), 0.027) << "step " << step;
+      lowest = {std::min(lowest.twist, a.twist), std::min(lowest.swing_y, a.swing_y),
+                std::min(lowest.swing_z, a.swing_z)};
+      highest = {std::max(highest.twist, a.twist), std::max(highest.swing_y, a.swing_y),
+                 std::max(highest.swing_z, a.swing_z)};
+    }
+    // The spin turns the twist one way (towards its min): that side engages.
+    EXPECT_LT(lowest.twist, -0.2 + 0.02);
+    EXPECT_GT(std::max(highest.swing_y, -lowest.swing_y), 0.3 - 0.02);
+    EXPECT_GT(std::max(highest.swing_z, -lowest.swing_z), 0.5 - 0.02);
+  }
+}
+
 // ====================================================== hinge (Jolt's test)
 
 // Rotation angle of q about +Y (Jolt's test: GetAxisAngle, negated when the axis

@@ -232,7 +232,8 @@ Scene MixedScene() {
 // strut (min above the initial length, so it pushes from the first step) and
 // a spring (min = max with a limits spring), between static-dynamic and
 // dynamic-dynamic pairs; a pulley with a block and tackle (ratio 2); two
-// cones in a row, one violated from the start. No rod
+// cones in a row, one violated from the start; swing-twist joints with locked
+// and free axes on a spun limb. No rod
 // starts exactly at its length: Jolt's position
 // phase measures the error from the anchors stored at setup and recomputes
 // only where it is non-zero, so a rod whose error is 0 in float and 1e-17 in
@@ -355,6 +356,46 @@ Scene MoreTypesScene() {
   elbow.twist_axis2 = {0.0f, -1.0f, 0.2f};
   elbow.half_cone_angle = 0.8f;
   scene.AddConstraint(elbow);
+
+  // A limb on two swing-twist joints whose axes are only locked or free, so
+  // every row is an equality: a locked twist with free swing from the ground
+  // (world frames), then a locked swing about Y (local frames). Limited axes
+  // are inequality rows; where one rests on its bound (a limb pressed into a
+  // limit) it switches on and off with the last bit of the angle, and one
+  // step can then differ between float and double by a whole impulse (the
+  // float reference alone lands 1e5 FLT_EPSILON from the double one). The
+  // limits are checked physically in jolt_behaviour_test.cc and lane by lane
+  // at the part level in swing_twist_test.cc.
+  const std::size_t upper = body("upper limb", MotionType::kDynamic, {1.0f, 1.0f, 0.5f}, 1.5f,
+                                 {0.06f, 0.01f, 0.06f}, {0.5f, 0.3f, -0.4f});
+  const std::size_t lower = body("lower limb", MotionType::kDynamic, {1.0f, 0.2f, 0.5f}, 1.0f,
+                                 {0.04f, 0.008f, 0.04f}, {-0.3f, 0, 0.6f});
+  SwingTwistConstraintSettings hip;
+  hip.name = "hip";
+  hip.body1 = ground;
+  hip.body2 = upper;
+  hip.point1 = hip.point2 = {1.0f, 1.4f, 0.5f};
+  hip.twist_axis1 = hip.twist_axis2 = {0.0f, -1.0f, 0.0f};
+  hip.plane_axis1 = hip.plane_axis2 = {0.0f, 0.0f, 1.0f};
+  hip.swing_type = SwingType::kPyramid;
+  hip.normal_half_cone_angle = hip.plane_half_cone_angle = kPi;  // free swing
+  hip.twist_min_angle = hip.twist_max_angle = 0.0f;              // locked twist
+  scene.AddConstraint(hip);
+  SwingTwistConstraintSettings knee;
+  knee.name = "knee";
+  knee.body1 = upper;
+  knee.body2 = lower;
+  knee.space = ConstraintSpace::kLocalToBodyCOM;
+  knee.point1 = {0.0f, -0.4f, 0.0f};
+  knee.point2 = {0.0f, 0.4f, 0.0f};
+  knee.twist_axis1 = knee.twist_axis2 = {0.0f, -1.0f, 0.0f};
+  knee.plane_axis1 = knee.plane_axis2 = {1.0f, 0.0f, 0.0f};
+  knee.swing_type = SwingType::kPyramid;
+  knee.normal_half_cone_angle = kPi;  // free swing about Z
+  knee.plane_half_cone_angle = 0.0f;  // locked swing about Y
+  knee.twist_min_angle = -kPi;        // free twist
+  knee.twist_max_angle = kPi;
+  scene.AddConstraint(knee);
   return scene;
 }
 

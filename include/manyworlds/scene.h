@@ -17,6 +17,7 @@
 
 #include "manyworlds/motion_type.h"
 #include "manyworlds/spring_settings.h"
+#include "manyworlds/swing_type.h"
 
 namespace manyworlds {
 
@@ -191,6 +192,31 @@ struct ConeConstraintSettings {
   float half_cone_angle = 0.0f;  // rad, in [0, pi]
 };
 
+// A ragdoll joint (spec 3, SwingTwist): body 1's point1 and body 2's point2
+// coincide, and body 2's frame may turn relative to body 1's within a swing
+// cone (or pyramid) and a twist range. Frames: X = twist axis, Z = plane
+// axis, Y = Z x X ("normal"); swing about Y is limited by
+// plane_half_cone_angle, about Z by normal_half_cone_angle, twist about X by
+// [twist_min_angle, twist_max_angle]. An axis is locked when its range is
+// within +-0.5 deg and free beyond +-179.5 deg (Jolt's rule). Swing and twist
+// motors and friction are not modelled yet.
+struct SwingTwistConstraintSettings {
+  std::string name;
+  std::size_t body1 = 0, body2 = 0;
+  ConstraintSpace space = ConstraintSpace::kWorldSpace;
+  Float3 point1{0, 0, 0};
+  Float3 twist_axis1{1, 0, 0};
+  Float3 plane_axis1{0, 1, 0};
+  Float3 point2{0, 0, 0};
+  Float3 twist_axis2{1, 0, 0};
+  Float3 plane_axis2{0, 1, 0};
+  SwingType swing_type = SwingType::kCone;
+  float normal_half_cone_angle = 0.0f;  // rad, [0, pi]
+  float plane_half_cone_angle = 0.0f;   // rad, [0, pi]
+  float twist_min_angle = 0.0f;         // rad, [-pi, pi]
+  float twist_max_angle = 0.0f;         // rad, [-pi, pi]
+};
+
 // No constraint index: the gear / rack has no position correction.
 inline constexpr std::size_t kNoConstraint = static_cast<std::size_t>(-1);
 
@@ -224,7 +250,8 @@ using ConstraintSettings =
     std::variant<PointConstraintSettings, FixedConstraintSettings, HingeConstraintSettings,
                  SliderConstraintSettings, GearConstraintSettings,
                  RackAndPinionConstraintSettings, DistanceConstraintSettings,
-                 PulleyConstraintSettings, ConeConstraintSettings>;
+                 PulleyConstraintSettings, ConeConstraintSettings,
+                 SwingTwistConstraintSettings>;
 
 // The world every batch copies. Constraints are solved in the order they were
 // added (Jolt's order for equal priorities).
