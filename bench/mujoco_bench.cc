@@ -26,7 +26,8 @@
 //               with 16 substeps of dt/16 and 40 + 8 iterations.
 // A spin check (2 threads summing a counter vs 1) runs before and after.
 // Exits with 1 when any world of any benchmark or accuracy run was
-// non-finite or MuJoCo warned (e.g. an unstable simulation it reset).
+// non-finite, MuJoCo warned (e.g. an unstable simulation it reset), or a
+// world stepped through a shared mjData differed from one stepped in its own.
 //
 //   mujoco_bench [--accuracy-worlds=K] [Google Benchmark flags]
 
@@ -122,6 +123,10 @@ class MujocoWorlds {
     });
   }
 
+  // The world's qpos after the last Step.
+  const double* QPos(std::size_t world) const { return &states_[world * stride_]; }
+  std::size_t nq() const { return nq_; }
+
   std::size_t NonFiniteWorlds() const {
     std::size_t count = 0;
     for (std::size_t w = 0; w < worlds_; ++w) {
@@ -180,6 +185,39 @@ void RunMujoco(benchmark::State& state, const std::string& name, const std::stri
   state.counters["threads"] = double(threads);
   state.counters["mujoco_warnings"] = double(mujoco_warnings.load());
   if (unsound) state.counters["nonfinite_worlds"] = double(unsound);
+}
+
+// Swapping worlds through one mjData per thread must step each world exactly
+// as its own mjData would (else the benchmark would time something else):
+// 5 worlds on 2 threads for 60 steps against 5 separate mjData, bit for bit.
+bool MujocoSwapMatchesOwnData() {
+  constexpr std::size_t kWorlds = 5;
+  bool same = true;
+  for (const std::string& id : MujocoSceneIds()) {
+    for (const std::string& model_id : MujocoModelsOf(id)) {
+      MujocoWorlds swapped(model_id, kWorlds, 2);
+      const MujocoModel model = LoadMujocoXml(MujocoXml(model_id, MujocoResolution::kBenchmark));
+      std::vector<MujocoData> own;
+      for (std::size_t w = 0; w < kWorlds; ++w) {
+        own.push_back(MakeMujocoData(model_id, model.get()));
+      }
+      for (std::uint64_t step = 0; step < kOneSecond; ++step) {
+        swapped.Step(step);
+        for (std::size_t w = 0; w < kWorlds; ++w) {
+          ApplyMujocoAction(model_id, model.get(), own[w].get(), w, step, kSceneSeed);
+          mj_step(model.get(), own[w].get());
+        }
+      }
+      for (std::size_t w = 0; w < kWorlds; ++w) {
+        if (std::memcmp(swapped.QPos(w), own[w]->qpos, swapped.nq() * sizeof(double)) != 0) {
+          std::printf("MuJoCo %s world %zu: stepping through a shared mjData differs from its "
+                      "own mjData\n", model_id.c_str(), w);
+          same = false;
+        }
+      }
+    }
+  }
+  return same;
 }
 
 void RegisterAll() {
@@ -429,6 +467,9 @@ int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
   mju_user_warning = CountMujocoWarning;
+  const bool swap_ok = MujocoSwapMatchesOwnData();
+  std::printf("MuJoCo worlds swapped through one mjData per thread step bit for bit as in their "
+              "own mjData: %s\n", swap_ok ? "yes" : "NO");
   RegisterAll();
   PrintSpin("before", SpinRatio());
   const int color = isatty(fileno(stdout)) ? benchmark::ConsoleReporter::OO_Color : 0;
@@ -442,10 +483,11 @@ int main(int argc, char** argv) {
   benchmark::Shutdown();
   const std::size_t nonfinite = NonFiniteWorldTally();
   const int warnings = mujoco_warnings.load();
-  if (nonfinite != 0 || warnings != 0 || !accuracy_finite) {
+  if (nonfinite != 0 || warnings != 0 || !accuracy_finite || !swap_ok) {
     std::printf("FAILED: %zu non-finite worlds in benchmarks, %d MuJoCo warnings, accuracy "
-                "errors %s\n",
-                nonfinite, warnings, accuracy_finite ? "finite" : "NOT finite");
+                "errors %s, shared mjData %s\n",
+                nonfinite, warnings, accuracy_finite ? "finite" : "NOT finite",
+                swap_ok ? "exact" : "NOT exact");
     return 1;
   }
   std::printf("all worlds finite, no MuJoCo warnings\n");
