@@ -147,17 +147,24 @@ inline void PrintSpin(const char* when, double ratio) {
 // -------------------------------------------------------- results and table
 
 // The console output as usual, plus the wall-clock time per iteration of
-// every benchmark (median over repetitions) for the closing table.
+// every benchmark for the closing table: the median over repetitions, taken
+// from Google Benchmark's "median" aggregate when it reports one (with
+// --benchmark_report_aggregates_only or display_aggregates_only the reporter
+// sees no single runs) and else from the runs themselves.
 class RecordingReporter : public benchmark::ConsoleReporter {
  public:
   using benchmark::ConsoleReporter::ConsoleReporter;
 
   void ReportRuns(const std::vector<Run>& runs) override {
     for (const Run& run : runs) {
-      if (run.run_type != Run::RT_Iteration || run.error_occurred) continue;
+      if (run.error_occurred) continue;
       const double seconds = run.GetAdjustedRealTime() /
                              benchmark::GetTimeUnitMultiplier(run.time_unit);
-      seconds_per_iteration_[run.run_name.function_name].push_back(seconds);
+      if (run.run_type == Run::RT_Iteration) {
+        seconds_per_iteration_[run.run_name.function_name].push_back(seconds);
+      } else if (run.aggregate_name == "median") {
+        median_seconds_[run.run_name.function_name] = seconds;
+      }
     }
     benchmark::ConsoleReporter::ReportRuns(runs);
   }
@@ -165,6 +172,9 @@ class RecordingReporter : public benchmark::ConsoleReporter {
   // World-steps per second of a benchmark of `worlds` worlds per iteration;
   // NaN if it did not run (filtered out, skipped).
   double WorldStepsPerSecond(const std::string& name, std::size_t worlds) const {
+    if (const auto median = median_seconds_.find(name); median != median_seconds_.end()) {
+      return double(worlds) / median->second;
+    }
     const auto found = seconds_per_iteration_.find(name);
     if (found == seconds_per_iteration_.end() || found->second.empty()) return NAN;
     std::vector<double> times = found->second;
@@ -176,6 +186,7 @@ class RecordingReporter : public benchmark::ConsoleReporter {
 
  private:
   std::map<std::string, std::vector<double>> seconds_per_iteration_;
+  std::map<std::string, double> median_seconds_;
 };
 
 // `value` printed with `format`, or "-" when it is NaN (did not run).
