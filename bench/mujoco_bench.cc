@@ -405,9 +405,15 @@ void PrintRateRow(const RecordingReporter& r, const std::string& model, const st
   const double m1 = rate("mujoco", model, 1), b1 = rate("batch", id, 1);
   const double m2 = rate("mujoco", model, 2), b2 = rate("batch", id, 2);
   if (std::isnan(m1) && std::isnan(b1) && std::isnan(m2) && std::isnan(b2)) return;
-  std::printf("%-14s %7zu %12s %12s %9s %12s %12s %9s %11s %11s\n", model.c_str(), worlds,
+  // The 1-thread ratio also per CPU second of the benchmark thread, which
+  // leaves out what other work on a shared machine took from either run.
+  const double cpu_ratio =
+      r.WorldStepsPerCpuSecond(Name("batch", id, worlds, 1), worlds) /
+      r.WorldStepsPerCpuSecond(Name("mujoco", model, worlds, 1), worlds);
+  std::printf("%-14s %7zu %12s %12s %9s %9s %12s %12s %9s %11s %11s\n", model.c_str(), worlds,
               Figure(m1, "%.4g").c_str(), Figure(b1, "%.4g").c_str(),
-              Figure(b1 / m1, "%.1fx").c_str(), Figure(m2, "%.4g").c_str(),
+              Figure(b1 / m1, "%.1fx").c_str(), Figure(cpu_ratio, "%.1fx").c_str(),
+              Figure(m2, "%.4g").c_str(),
               Figure(b2, "%.4g").c_str(), Figure(b2 / m2, "%.1fx").c_str(),
               Figure(m2 / m1, "%.2fx").c_str(), Figure(b2 / b1, "%.2fx").c_str());
 }
@@ -420,9 +426,9 @@ void PrintTable(const RecordingReporter& r) {
       "same worlds, threads, steps and actions; ratio = batch / MuJoCo; both chain16 models "
       "are compared with our chain16 (ball joints)\n",
       mj_version(), probe.SimdTarget(), probe.SimdLanes());
-  std::printf("%-14s %7s %12s %12s %9s %12s %12s %9s %11s %11s\n", "MuJoCo model", "worlds",
-              "MuJoCo 1T", "batch 1T", "ratio", "MuJoCo 2T", "batch 2T", "ratio",
-              "MuJoCo 2/1", "batch 2/1");
+  std::printf("%-14s %7s %12s %12s %9s %9s %12s %12s %9s %11s %11s\n", "MuJoCo model",
+              "worlds", "MuJoCo 1T", "batch 1T", "ratio", "(CPU)", "MuJoCo 2T", "batch 2T",
+              "ratio", "MuJoCo 2/1", "batch 2/1");
   for (const std::string& id : MujocoSceneIds()) {
     for (const std::string& model : MujocoModelsOf(id)) {
       for (const std::size_t worlds : kWorldCounts) PrintRateRow(r, model, id, worlds);

@@ -146,11 +146,15 @@ inline void PrintSpin(const char* when, double ratio) {
 
 // -------------------------------------------------------- results and table
 
-// The console output as usual, plus the wall-clock time per iteration of
-// every benchmark for the closing table: the median over repetitions, taken
-// from Google Benchmark's "median" aggregate when it reports one (with
-// --benchmark_report_aggregates_only or display_aggregates_only the reporter
-// sees no single runs) and else from the runs themselves.
+// The console output as usual, plus the wall-clock and CPU time per
+// iteration of every benchmark for the closing table: the median over
+// repetitions, taken from Google Benchmark's "median" aggregate when it
+// reports one (with --benchmark_report_aggregates_only or
+// display_aggregates_only the reporter sees no single runs) and else from
+// the runs themselves. CPU time is that of the benchmark's own thread: for
+// 1-thread runs on a shared machine it leaves out the time the thread waited
+// for a core; for 2-thread runs it means nothing (the TBB workers are not in
+// it).
 class RecordingReporter : public benchmark::ConsoleReporter {
  public:
   using benchmark::ConsoleReporter::ConsoleReporter;
@@ -158,35 +162,47 @@ class RecordingReporter : public benchmark::ConsoleReporter {
   void ReportRuns(const std::vector<Run>& runs) override {
     for (const Run& run : runs) {
       if (run.error_occurred) continue;
-      const double seconds = run.GetAdjustedRealTime() /
-                             benchmark::GetTimeUnitMultiplier(run.time_unit);
+      const double unit = benchmark::GetTimeUnitMultiplier(run.time_unit);
+      const Times times{run.GetAdjustedRealTime() / unit, run.GetAdjustedCPUTime() / unit};
       if (run.run_type == Run::RT_Iteration) {
-        seconds_per_iteration_[run.run_name.function_name].push_back(seconds);
+        iterations_[run.run_name.function_name].push_back(times);
       } else if (run.aggregate_name == "median") {
-        median_seconds_[run.run_name.function_name] = seconds;
+        medians_[run.run_name.function_name] = times;
       }
     }
     benchmark::ConsoleReporter::ReportRuns(runs);
   }
 
-  // World-steps per second of a benchmark of `worlds` worlds per iteration;
-  // NaN if it did not run (filtered out, skipped).
+  // World-steps per wall-clock second of a benchmark of `worlds` worlds per
+  // iteration; NaN if it did not run (filtered out, skipped).
   double WorldStepsPerSecond(const std::string& name, std::size_t worlds) const {
-    if (const auto median = median_seconds_.find(name); median != median_seconds_.end()) {
-      return double(worlds) / median->second;
-    }
-    const auto found = seconds_per_iteration_.find(name);
-    if (found == seconds_per_iteration_.end() || found->second.empty()) return NAN;
-    std::vector<double> times = found->second;
-    std::sort(times.begin(), times.end());
-    const std::size_t n = times.size();
-    const double median = n % 2 ? times[n / 2] : 0.5 * (times[n / 2 - 1] + times[n / 2]);
-    return double(worlds) / median;
+    return double(worlds) / Median(name, &Times::real);
+  }
+  // The same per CPU second of the benchmark's thread (1-thread runs only).
+  double WorldStepsPerCpuSecond(const std::string& name, std::size_t worlds) const {
+    return double(worlds) / Median(name, &Times::cpu);
   }
 
  private:
-  std::map<std::string, std::vector<double>> seconds_per_iteration_;
-  std::map<std::string, double> median_seconds_;
+  struct Times {
+    double real = 0, cpu = 0;  // seconds per iteration
+  };
+
+  double Median(const std::string& name, double Times::*field) const {
+    if (const auto median = medians_.find(name); median != medians_.end()) {
+      return median->second.*field;
+    }
+    const auto found = iterations_.find(name);
+    if (found == iterations_.end() || found->second.empty()) return NAN;
+    std::vector<double> times;
+    for (const Times& t : found->second) times.push_back(t.*field);
+    std::sort(times.begin(), times.end());
+    const std::size_t n = times.size();
+    return n % 2 ? times[n / 2] : 0.5 * (times[n / 2 - 1] + times[n / 2]);
+  }
+
+  std::map<std::string, std::vector<Times>> iterations_;
+  std::map<std::string, Times> medians_;
 };
 
 // `value` printed with `format`, or "-" when it is NaN (did not run).
