@@ -103,7 +103,8 @@ class MujocoWorlds {
     for (std::size_t w = 0; w < worlds; ++w) Save(data_[0].get(), w);
   }
 
-  // One step of every world; world w is in thread w * T / N's half.
+  // One step of every world: task t of T, with mjData t, steps worlds
+  // [t N / T, (t + 1) N / T) one after the other.
   void Step(std::uint64_t step) {
     arena_.execute([&] {
       tbb::parallel_for(
