@@ -14,9 +14,9 @@ constexpr Float3 kX{1, 0, 0}, kY{0, 1, 0}, kZ{0, 0, 1};
 
 // The scene id in a form that can be switched on.
 enum class SceneId { kCartpole, kChain16, kChain16R100, kChain16R1000, kChain64, kRackPinion,
-                     kGearTrain };
+                     kGearTrain, kRagdoll };
 
-constexpr std::array<std::pair<std::string_view, SceneId>, 7> kScenes{{
+constexpr std::array<std::pair<std::string_view, SceneId>, 8> kScenes{{
     {"cartpole", SceneId::kCartpole},
     {"chain16", SceneId::kChain16},
     {"chain16-r100", SceneId::kChain16R100},
@@ -24,6 +24,7 @@ constexpr std::array<std::pair<std::string_view, SceneId>, 7> kScenes{{
     {"chain64", SceneId::kChain64},
     {"rackpinion", SceneId::kRackPinion},
     {"geartrain", SceneId::kGearTrain},
+    {"ragdoll", SceneId::kRagdoll},
 }};
 
 SceneId ParseId(std::string_view id) {
@@ -197,6 +198,83 @@ Scene GearTrain() {
   return scene;
 }
 
+// A rod-like limb of mass m and length L along Y: inertia m L^2 / 12 across
+// it, a tenth of that along it.
+BodySettings Limb(std::string name, float mass, float length, Float3 position) {
+  const float across = mass * length * length / 12.0f;
+  BodySettings body = Dynamic(std::move(name), mass, {across, 0.1f * across, across}, position);
+  body.gravity_factor = 0.0f;  // floating
+  return body;
+}
+
+// A ragdoll joint at `point` (world space), twist axis `twist`, plane axis Z.
+SwingTwistConstraintSettings Joint(std::string name, std::size_t body1, std::size_t body2,
+                                   Float3 point, Float3 twist, float normal_half_cone,
+                                   float plane_half_cone, float twist_min, float twist_max) {
+  SwingTwistConstraintSettings joint;
+  joint.name = std::move(name);
+  joint.body1 = body1;
+  joint.body2 = body2;
+  joint.point1 = joint.point2 = point;
+  joint.twist_axis1 = joint.twist_axis2 = twist;
+  joint.plane_axis1 = joint.plane_axis2 = kZ;
+  joint.swing_type = SwingType::kCone;
+  joint.normal_half_cone_angle = normal_half_cone;
+  joint.plane_half_cone_angle = plane_half_cone;
+  joint.twist_min_angle = twist_min;
+  joint.twist_max_angle = twist_max;
+  return joint;
+}
+
+// A hinge about X at `point` with limits and a position motor (2 Hz, critically
+// damped, +-max_torque): an elbow or a knee.
+HingeConstraintSettings MotorHinge(std::string name, std::size_t body1, std::size_t body2,
+                                   Float3 point, float min, float max, float max_torque) {
+  HingeConstraintSettings hinge;
+  hinge.name = std::move(name);
+  hinge.body1 = body1;
+  hinge.body2 = body2;
+  hinge.point1 = hinge.point2 = point;
+  hinge.hinge_axis1 = hinge.hinge_axis2 = kX;
+  hinge.normal_axis1 = hinge.normal_axis2 = {0, -1, 0};
+  hinge.limits_min = min;
+  hinge.limits_max = max;
+  hinge.motor_state = MotorState::kPosition;
+  hinge.motor.min_force_limit = -max_torque;
+  hinge.motor.max_force_limit = max_torque;
+  return hinge;
+}
+
+// An 11-body humanoid floating in space (gravity factor 0), 1.8 m tall:
+// pelvis, chest and head on swing-twist joints (waist, neck), arms and legs
+// on swing-twist shoulders and hips and position-motor hinges at the elbows
+// and knees (reference_scene::kRagdollMotors).
+Scene Ragdoll() {
+  Scene scene;
+  const std::size_t pelvis = scene.AddBody(Limb("pelvis", 10.0f, 0.3f, {0, 1.0f, 0}));
+  const std::size_t chest = scene.AddBody(Limb("chest", 15.0f, 0.4f, {0, 1.35f, 0}));
+  const std::size_t head = scene.AddBody(Limb("head", 5.0f, 0.25f, {0, 1.75f, 0}));
+  scene.AddConstraint(Joint("waist", pelvis, chest, {0, 1.15f, 0}, kY, 0.4f, 0.4f, -0.3f, 0.3f));
+  scene.AddConstraint(Joint("neck", chest, head, {0, 1.62f, 0}, kY, 0.5f, 0.5f, -0.6f, 0.6f));
+  for (const float side : {-1.0f, 1.0f}) {
+    const std::string s = side < 0 ? " left" : " right";
+    const float arm_x = 0.22f * side, leg_x = 0.1f * side;
+    const std::size_t upper_arm = scene.AddBody(Limb("upper arm" + s, 2.0f, 0.3f, {arm_x, 1.35f, 0}));
+    const std::size_t lower_arm = scene.AddBody(Limb("lower arm" + s, 1.5f, 0.3f, {arm_x, 1.05f, 0}));
+    const std::size_t upper_leg = scene.AddBody(Limb("upper leg" + s, 7.0f, 0.4f, {leg_x, 0.7f, 0}));
+    const std::size_t lower_leg = scene.AddBody(Limb("lower leg" + s, 4.0f, 0.4f, {leg_x, 0.3f, 0}));
+    scene.AddConstraint(Joint("shoulder" + s, chest, upper_arm, {arm_x, 1.5f, 0}, {0, -1, 0},
+                              1.2f, 0.8f, -0.5f, 0.5f));
+    scene.AddConstraint(MotorHinge("elbow" + s, upper_arm, lower_arm, {arm_x, 1.2f, 0}, -2.5f,
+                                   0.0f, 30.0f));
+    scene.AddConstraint(Joint("hip" + s, pelvis, upper_leg, {leg_x, 0.9f, 0}, {0, -1, 0}, 0.9f,
+                              0.5f, -0.3f, 0.3f));
+    scene.AddConstraint(MotorHinge("knee" + s, upper_leg, lower_leg, {leg_x, 0.5f, 0}, 0.0f,
+                                   2.5f, 60.0f));
+  }
+  return scene;
+}
+
 // splitmix64's finaliser (Steele, Lea, Flood 2014).
 constexpr std::uint64_t Mix(std::uint64_t x) {
   x += 0x9E3779B97F4A7C15ull;
@@ -209,9 +287,12 @@ constexpr std::uint64_t Mix(std::uint64_t x) {
 // step, then of the world; its top 24 bits are a float in [0, 1) without
 // rounding, scaled to [-10, 10) N.
 std::uint64_t StepKey(std::uint64_t seed, std::uint64_t step) { return Mix(Mix(seed) ^ step); }
+// The top 24 bits of the world's hash: a float in [0, 1) without rounding.
+float UnitOf(std::uint64_t key, std::uint64_t world) {
+  return float(Mix(key ^ world) >> 40) * 0x1p-24f;
+}
 float ForceOf(std::uint64_t step_key, std::uint64_t world) {
-  const float unit = float(Mix(step_key ^ world) >> 40) * 0x1p-24f;
-  return -10.0f + 20.0f * unit;
+  return -10.0f + 20.0f * UnitOf(step_key, world);
 }
 
 }  // namespace
@@ -231,6 +312,7 @@ Scene MakeReferenceScene(std::string_view id) {
     case SceneId::kChain64: return Chain(64, 1.0f);
     case SceneId::kRackPinion: return RackPinion();
     case SceneId::kGearTrain: return GearTrain();
+    case SceneId::kRagdoll: return Ragdoll();
   }
   throw std::logic_error("MakeReferenceScene: unhandled scene id");
 }
@@ -240,10 +322,29 @@ float CartpoleForce(std::uint64_t seed, std::uint64_t world, std::uint64_t step)
 }
 
 SceneActions::SceneActions(std::string_view id) {
-  if (ParseId(id) == SceneId::kCartpole) {
+  const SceneId scene = ParseId(id);
+  if (scene == SceneId::kCartpole) {
     forces_per_world_ = 1;
     body_ = reference_scene::kCart;
+  } else if (scene == SceneId::kRagdoll) {
+    namespace rs = reference_scene;
+    targets_ = {{rs::kLeftElbow, -2.5f, 0.0f},
+                {rs::kLeftKnee, 0.0f, 2.5f},
+                {rs::kRightElbow, -2.5f, 0.0f},
+                {rs::kRightKnee, 0.0f, 2.5f}};
   }
+}
+
+MotorTarget SceneActions::Target(std::size_t i, std::uint64_t world, std::uint64_t step,
+                                 std::uint64_t seed) const {
+  if (i >= targets_.size()) {
+    throw std::out_of_range("SceneActions::Target: index " + std::to_string(i) + " but " +
+                            std::to_string(targets_.size()) + " target(s) per world");
+  }
+  const TargetRange& range = targets_[i];
+  // A key per (seed, step, motor), then the world's uniform value in [0, 1).
+  const float unit = UnitOf(Mix(StepKey(seed, step) ^ (0xA5A5ull + i)), world);
+  return MotorTarget{range.constraint, range.min + (range.max - range.min) * unit};
 }
 
 BodyForce SceneActions::Force(std::size_t i, std::uint64_t world, std::uint64_t step,
@@ -256,12 +357,20 @@ BodyForce SceneActions::Force(std::size_t i, std::uint64_t world, std::uint64_t 
 }
 
 void SceneActions::Apply(Batch& batch, std::uint64_t step, std::uint64_t seed) const {
-  if (empty()) return;
-  const std::uint64_t key = StepKey(seed, step);
   const std::size_t worlds = batch.world_count();
-  std::vector<float> forces(worlds * 3, 0.0f);
-  for (std::size_t world = 0; world < worlds; ++world) forces[world * 3] = ForceOf(key, world);
-  batch.SetForces(body_, forces);
+  if (forces_per_world_ != 0) {
+    const std::uint64_t key = StepKey(seed, step);
+    std::vector<float> forces(worlds * 3, 0.0f);
+    for (std::size_t world = 0; world < worlds; ++world) forces[world * 3] = ForceOf(key, world);
+    batch.SetForces(body_, forces);
+  }
+  std::vector<float> targets(worlds);
+  for (std::size_t i = 0; i < targets_.size(); ++i) {
+    for (std::size_t world = 0; world < worlds; ++world) {
+      targets[world] = Target(i, world, step, seed).position;
+    }
+    batch.SetTargetPositions(targets_[i].constraint, targets);
+  }
 }
 
 void ApplyReferenceActions(std::string_view id, Batch& batch, std::uint64_t step,

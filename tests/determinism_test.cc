@@ -51,6 +51,11 @@ void StepWithActions(Batch& batch, const SceneActions& actions, int steps, Index
         const BodyForce f = actions.Force(i, index_of(w), static_cast<std::uint64_t>(step), kSeed);
         batch.SetForce(w, f.body, f.force);
       }
+      for (std::size_t i = 0; i < actions.targets_per_world(); ++i) {
+        const MotorTarget t =
+            actions.Target(i, index_of(w), static_cast<std::uint64_t>(step), kSeed);
+        batch.SetTargetPosition(w, t.constraint, t.position);
+      }
     }
     batch.Step(settings);
   }
@@ -171,7 +176,7 @@ TEST_P(DeterminismTest, ResettingOrChangingOneWorldLeavesTheOthersBitIdentical) 
 }
 
 INSTANTIATE_TEST_SUITE_P(ReferenceScenes, DeterminismTest,
-                         ::testing::Values("cartpole", "chain16", "rackpinion", "geartrain"),
+                         ::testing::Values("cartpole", "chain16", "rackpinion", "geartrain", "ragdoll"),
                          [](const auto& info) { return info.param; });
 
 }  // namespace

@@ -212,7 +212,7 @@ TEST_P(HealthTest, BadWorldsAreFlaggedAndEveryOtherWorldKeepsItsBits) {
 
 INSTANTIATE_TEST_SUITE_P(
     ReferenceScenes, HealthTest,
-    ::testing::Combine(::testing::Values("cartpole", "chain16", "rackpinion", "geartrain"),
+    ::testing::Combine(::testing::Values("cartpole", "chain16", "rackpinion", "geartrain", "ragdoll"),
                        ::testing::ValuesIn(SupportedStepTargets())),
     [](const auto& info) {
       return std::get<0>(info.param) + "_" + hwy::TargetName(std::get<1>(info.param));

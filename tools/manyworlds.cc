@@ -192,8 +192,12 @@ int Run(int argc, char** argv) {
   std::printf("dt:                   %.6g s per step, gravity (%g, %g, %g) m/s^2\n",
               double(settings.delta_time), double(settings.gravity[0]),
               double(settings.gravity[1]), double(settings.gravity[2]));
-  std::printf("actions:              %s\n",
-              actions.empty() ? "none" : "every step (cart force along X, uniform [-10, 10] N)");
+  const char* action_text =
+      actions.empty() ? "none"
+      : actions.forces_per_world() != 0
+          ? "every step (cart force along X, uniform [-10, 10] N)"
+          : "every step (elbow and knee position targets, uniform in their limits)";
+  std::printf("actions:              %s\n", action_text);
   std::printf("timed:                %llu steps after %llu warm-up steps, %.3f s wall\n",
               static_cast<unsigned long long>(steps), static_cast<unsigned long long>(warmup),
               seconds);

@@ -45,22 +45,35 @@ struct BodyForce {
   Float3 force{0, 0, 0};
 };
 
-// The action of a reference scene each step. cartpole: a force on the cart
-// along X, uniform in [-10, 10) N, drawn per (seed, world, step) by a
-// splitmix64 hash. Every other scene: no action.
+// A motor's position target (hinge: rad) for one constraint of one world,
+// for the next step.
+struct MotorTarget {
+  std::size_t constraint = 0;
+  float position = 0.0f;
+};
+
+// The action of a reference scene each step, drawn per (seed, world, step)
+// by a splitmix64 hash. cartpole: a force on the cart along X, uniform in
+// [-10, 10) N. ragdoll: a position target for every elbow and knee motor,
+// uniform in the hinge's limits. Every other scene: no action.
 class SceneActions {
  public:
   // Throws std::invalid_argument for an unknown id, as MakeReferenceScene.
   explicit SceneActions(std::string_view id);
 
-  bool empty() const { return forces_per_world_ == 0; }
+  bool empty() const { return forces_per_world_ == 0 && targets_.empty(); }
   std::size_t forces_per_world() const { return forces_per_world_; }
+  std::size_t targets_per_world() const { return targets_.size(); }
 
   // The i-th force (i < forces_per_world()) of world `world` at `step`.
   BodyForce Force(std::size_t i, std::uint64_t world, std::uint64_t step,
                   std::uint64_t seed) const;
 
-  // Sets the forces of every world of the batch for its next Step.
+  // The i-th motor target (i < targets_per_world()) of world `world` at `step`.
+  MotorTarget Target(std::size_t i, std::uint64_t world, std::uint64_t step,
+                     std::uint64_t seed) const;
+
+  // Sets the forces and targets of every world of the batch for its next Step.
   void Apply(Batch& batch, std::uint64_t step, std::uint64_t seed) const;
 
   // The same forces for world `world_index`, given to one world of a scalar
@@ -75,11 +88,21 @@ class SceneActions {
       const BodyForce f = Force(i, world_index, step, seed);
       world.SetForce(f.body, Vec(Scalar(f.force[0]), Scalar(f.force[1]), Scalar(f.force[2])));
     }
+    for (std::size_t i = 0; i < targets_.size(); ++i) {
+      const MotorTarget t = Target(i, world_index, step, seed);
+      world.SetTargetPosition(t.constraint, Scalar(t.position));
+    }
   }
 
  private:
+  // A motor driven by the actions: its constraint and target range.
+  struct TargetRange {
+    std::size_t constraint;
+    float min, max;
+  };
   std::size_t forces_per_world_ = 0;
   std::size_t body_ = 0;
+  std::vector<TargetRange> targets_;
 };
 
 // SceneActions(id).Apply(batch, step, seed).
@@ -103,6 +126,11 @@ inline constexpr std::size_t kPinionHinge = 0, kRackSlider = 1, kRackAndPinion =
 // geartrain
 inline constexpr std::size_t kGear1 = 1, kGear2 = 2;
 inline constexpr std::size_t kGear1Hinge = 0, kGear2Hinge = 1, kGear = 2;
+// ragdoll: bodies pelvis 0, chest 1, head 2, then per side (left, right)
+// upper arm, lower arm, upper leg, lower leg; constraints waist 0, neck 1,
+// then per side shoulder, elbow, hip, knee.
+inline constexpr std::size_t kPelvis = 0;
+inline constexpr std::size_t kLeftElbow = 3, kLeftKnee = 5, kRightElbow = 7, kRightKnee = 9;
 }  // namespace reference_scene
 
 }  // namespace manyworlds
