@@ -107,6 +107,13 @@ void CheckBody(const BodySettings& body, const std::string& what) {
   if (!Finite(body.inertia_rotation)) {
     Refuse(what, "inertia_rotation", "has a non-finite component");
   }
+  // Eigen normalises a zero quaternion to zero, which would silently give
+  // the body a wrong (not rotated, or zero) inverse inertia.
+  const Quaternion& r = body.inertia_rotation;
+  if (std::sqrt(double(r[0]) * r[0] + double(r[1]) * r[1] + double(r[2]) * r[2] +
+                double(r[3]) * r[3]) < 1e-6) {
+    Refuse(what, "inertia_rotation", "is a zero quaternion");
+  }
   const auto non_negative = [&](const char* field, float x) {
     if (!Finite(x) || x < 0.0f) Refuse(what, field, "must be finite and >= 0");
   };

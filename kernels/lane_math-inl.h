@@ -192,7 +192,11 @@ HWY_INLINE void SinCos(LaneVec x, LaneVec& sin_out, LaneVec& cos_out) {
   const hn::RebindToSigned<LaneTag> di;
   const LaneVec abs_x = hn::Abs(x);
   const LaneVec quadrant = hn::Round(hn::Mul(abs_x, Splat(0.63661977236758134f)));
-  const auto quadrant_int = hn::ConvertTo(di, quadrant);
+  // A NaN x gives a NaN quadrant, and converting NaN to int is undefined
+  // behaviour on Highway's SCALAR target (a plain static_cast; UBSan reports
+  // it). Such lanes come out NaN whatever the quadrant, so convert 0 instead.
+  const auto quadrant_int =
+      hn::ConvertTo(di, hn::IfThenElseZero(hn::Eq(quadrant, quadrant), quadrant));
   // abs_x - quadrant * pi/2, with pi/2 split into three exactly multipliable parts.
   LaneVec y = hn::NegMulAdd(quadrant, Splat(1.5703125f), abs_x);
   y = hn::NegMulAdd(quadrant, Splat(4.837512969970703125e-4f), y);

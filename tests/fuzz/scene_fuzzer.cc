@@ -1,0 +1,419 @@
+// libFuzzer target: random bytes -> a scene (every motion type, every
+// constraint type of scene.h with random settings), a Batch of a few worlds,
+// then a few steps with random actions, states, resets and per-world
+// parameters written in (NaN, infinities and huge values included).
+//
+// What must hold for every input (built with -fsanitize=fuzzer,address,
+// undefined, so any bad access, leak or undefined behaviour aborts):
+//   - a bad scene, bad step settings or a bad call is refused with SceneError,
+//     std::invalid_argument or std::out_of_range, never a crash;
+//   - WorldHealth() has one byte per world, holding only WorldHealthBits;
+//   - with UnhealthyWorlds::kKeep, a world whose state is not finite after a
+//     step is flagged kNonFiniteState (the health check misses nothing);
+//   - with UnhealthyWorlds::kReset, no world is left non-finite.
+// A broken property calls __builtin_trap(), which libFuzzer reports as a crash.
+//
+// The byte decoder favours values a Batch accepts (unit axes from a short
+// list, perpendicular normals, masses in [0.01, 100]) so that most inputs get
+// past the scene checks and reach the stepper; one byte in ~16 picks a
+// special value instead (see Float below).
+
+#include <fuzzer/FuzzedDataProvider.h>
+
+#include <cfloat>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <iterator>
+#include <limits>
+#include <optional>
+#include <stdexcept>
+#include <vector>
+
+#include "hwy/targets.h"
+#include "manyworlds/batch.h"
+#include "manyworlds/error.h"
+#include "manyworlds/scene.h"
+
+namespace manyworlds {
+namespace {
+
+constexpr std::size_t kMaxBodies = 6;
+constexpr std::size_t kMaxConstraints = 8;
+constexpr std::size_t kMaxWorlds = 40;  // up to 3 blocks, the last one partly padding
+constexpr int kMaxSteps = 4;
+constexpr int kMaxCallsPerStep = 8;
+
+// Values that break float arithmetic or sit on a boundary the checks test.
+constexpr float kSpecial[] = {
+    0.0f, -0.0f, 1.0f, -1.0f, kPi, -kPi, 1e30f, -1e30f, FLT_MAX, -FLT_MAX, FLT_MIN,
+    FLT_TRUE_MIN, FLT_EPSILON, 16777216.0f, 1e-30f,
+    std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity(),
+    std::numeric_limits<float>::quiet_NaN(),
+};
+
+// A float in [lo, hi] most of the time, else a special value or raw bits.
+float Float(FuzzedDataProvider& in, float lo, float hi) {
+  const std::uint8_t kind = in.ConsumeIntegral<std::uint8_t>();
+  if (kind < 240) return in.ConsumeFloatingPointInRange(lo, hi);
+  if (kind < 254) return kSpecial[in.ConsumeIntegralInRange<std::size_t>(0, std::size(kSpecial) - 1)];
+  return in.ConsumeFloatingPoint<float>();  // any float, including NaN and denormals
+}
+
+Float3 Vec(FuzzedDataProvider& in, float lo, float hi) {
+  return {Float(in, lo, hi), Float(in, lo, hi), Float(in, lo, hi)};
+}
+
+// An axis and a normal to it. Mostly a pair of unit axes from a short list
+// (so the scene passes the perpendicularity checks), sometimes anything.
+struct Frame {
+  Float3 axis, normal;
+};
+Frame AxisPair(FuzzedDataProvider& in) {
+  static constexpr Float3 kAxes[] = {{1, 0, 0},  {0, 1, 0},  {0, 0, 1},
+                                     {-1, 0, 0}, {0, -1, 0}, {0, 0, -1}};
+  const std::uint8_t kind = in.ConsumeIntegral<std::uint8_t>();
+  if (kind < 224) {
+    const std::size_t a = in.ConsumeIntegralInRange<std::size_t>(0, 5);
+    const std::size_t n = (a + in.ConsumeIntegralInRange<std::size_t>(1, 2)) % 3 +
+                          3 * in.ConsumeIntegralInRange<std::size_t>(0, 1);
+    return {kAxes[a], kAxes[n]};
+  }
+  if (kind < 240) {  // perpendicular but not unit, or rotated off the grid
+    const float s = Float(in, 0.01f, 10.0f), c = std::cos(Float(in, -kPi, kPi));
+    const float t = std::sin(Float(in, -kPi, kPi));
+    return {{s * c, s * t, 0}, {-t, c, 0}};
+  }
+  return {Vec(in, -2, 2), Vec(in, -2, 2)};
+}
+
+Quaternion Quat(FuzzedDataProvider& in) {
+  const std::uint8_t kind = in.ConsumeIntegral<std::uint8_t>();
+  if (kind < 64) return {0, 0, 0, 1};
+  if (kind < 248) {  // any rotation; the batch normalises it
+    return {Float(in, -1, 1), Float(in, -1, 1), Float(in, -1, 1), Float(in, -1, 1)};
+  }
+  return {0, 0, 0, 0};  // refused
+}
+
+std::size_t Index(FuzzedDataProvider& in, std::size_t count) {
+  // One in ~30 out of range, to check that the batch refuses it.
+  if (in.ConsumeIntegral<std::uint8_t>() >= 248) return count + in.ConsumeIntegral<std::uint8_t>();
+  return count == 0 ? 0 : in.ConsumeIntegralInRange<std::size_t>(0, count - 1);
+}
+
+std::size_t Helper(FuzzedDataProvider& in, std::size_t constraints) {
+  return in.ConsumeBool() ? kNoConstraint : Index(in, constraints);
+}
+
+SpringSettings Spring(FuzzedDataProvider& in) {
+  SpringSettings spring;
+  spring.mode = static_cast<SpringMode>(in.ConsumeIntegralInRange<int>(0, 2));
+  spring.frequency_or_stiffness = in.ConsumeBool() ? 0.0f : Float(in, -1, 100);
+  spring.damping = Float(in, -0.5f, 5);
+  return spring;
+}
+
+MotorSettings Motor(FuzzedDataProvider& in) {
+  MotorSettings motor;
+  if (in.ConsumeBool()) motor.spring = Spring(in);
+  if (in.ConsumeBool()) {
+    motor.min_force_limit = Float(in, -100, 10);
+    motor.max_force_limit = Float(in, -10, 100);
+  }
+  return motor;
+}
+
+BodySettings Body(FuzzedDataProvider& in) {
+  BodySettings body;
+  body.motion_type = static_cast<MotionType>(in.ConsumeIntegralInRange<int>(0, 2));
+  body.mass = Float(in, 0.01f, 100);
+  body.inertia_diagonal = Vec(in, 0.001f, 10);
+  body.inertia_rotation = Quat(in);
+  body.position = Vec(in, -10, 10);
+  body.rotation = Quat(in);
+  body.linear_velocity = Vec(in, -10, 10);
+  body.angular_velocity = Vec(in, -10, 10);
+  if (in.ConsumeBool()) {
+    body.linear_damping = Float(in, 0, 2);
+    body.angular_damping = Float(in, 0, 2);
+    body.max_linear_velocity = Float(in, 0, 1000);
+    body.max_angular_velocity = Float(in, 0, 100);
+    body.gravity_factor = Float(in, -2, 2);
+  }
+  // Every bit pattern of the byte, including kNone and bits above kAll.
+  if (in.ConsumeBool()) body.allowed_dofs = static_cast<AllowedDofs>(in.ConsumeIntegral<std::uint8_t>());
+  return body;
+}
+
+template <class Settings>
+void Common(FuzzedDataProvider& in, std::size_t bodies, Settings& c) {
+  c.body1 = Index(in, bodies);
+  c.body2 = Index(in, bodies);
+  c.space = in.ConsumeBool() ? ConstraintSpace::kWorldSpace : ConstraintSpace::kLocalToBodyCOM;
+}
+
+ConstraintSettings Constraint(FuzzedDataProvider& in, std::size_t bodies,
+                              std::size_t constraints) {
+  switch (in.ConsumeIntegralInRange<int>(0, 5)) {
+    case 0: {
+      PointConstraintSettings c;
+      Common(in, bodies, c);
+      c.point1 = Vec(in, -5, 5);
+      c.point2 = in.ConsumeBool() ? c.point1 : Vec(in, -5, 5);
+      return c;
+    }
+    case 1: {
+      FixedConstraintSettings c;
+      Common(in, bodies, c);
+      c.auto_detect_point = in.ConsumeBool();
+      c.point1 = Vec(in, -5, 5);
+      c.point2 = in.ConsumeBool() ? c.point1 : Vec(in, -5, 5);
+      const Frame f1 = AxisPair(in), f2 = in.ConsumeBool() ? f1 : AxisPair(in);
+      c.axis_x1 = f1.axis, c.axis_y1 = f1.normal, c.axis_x2 = f2.axis, c.axis_y2 = f2.normal;
+      return c;
+    }
+    case 2: {
+      HingeConstraintSettings c;
+      Common(in, bodies, c);
+      c.point1 = Vec(in, -5, 5);
+      c.point2 = in.ConsumeBool() ? c.point1 : Vec(in, -5, 5);
+      const Frame f1 = AxisPair(in), f2 = in.ConsumeBool() ? f1 : AxisPair(in);
+      c.hinge_axis1 = f1.axis, c.normal_axis1 = f1.normal;
+      c.hinge_axis2 = f2.axis, c.normal_axis2 = f2.normal;
+      if (in.ConsumeBool()) {
+        c.limits_min = Float(in, -3.3f, 0.1f);
+        c.limits_max = Float(in, -0.1f, 3.3f);
+        c.limits_spring = Spring(in);
+      }
+      c.max_friction_torque = in.ConsumeBool() ? 0.0f : Float(in, -1, 10);
+      c.motor = Motor(in);
+      c.motor_state = static_cast<MotorState>(in.ConsumeIntegralInRange<int>(0, 3));
+      c.target_angular_velocity = Float(in, -10, 10);
+      c.target_angle = Float(in, -4, 4);
+      return c;
+    }
+    case 3: {
+      SliderConstraintSettings c;
+      Common(in, bodies, c);
+      c.auto_detect_point = in.ConsumeBool();
+      c.point1 = Vec(in, -5, 5);
+      c.point2 = in.ConsumeBool() ? c.point1 : Vec(in, -5, 5);
+      const Frame f1 = AxisPair(in), f2 = in.ConsumeBool() ? f1 : AxisPair(in);
+      c.slider_axis1 = f1.axis, c.normal_axis1 = f1.normal;
+      c.slider_axis2 = f2.axis, c.normal_axis2 = f2.normal;
+      if (in.ConsumeBool()) {
+        c.limits_min = Float(in, -5, 0.5f);
+        c.limits_max = Float(in, -0.5f, 5);
+        c.limits_spring = Spring(in);
+      }
+      c.max_friction_force = in.ConsumeBool() ? 0.0f : Float(in, -1, 10);
+      c.motor = Motor(in);
+      c.motor_state = static_cast<MotorState>(in.ConsumeIntegralInRange<int>(0, 3));
+      c.target_velocity = Float(in, -10, 10);
+      c.target_position = Float(in, -10, 10);
+      return c;
+    }
+    case 4: {
+      GearConstraintSettings c;
+      Common(in, bodies, c);
+      c.hinge_axis1 = AxisPair(in).axis;
+      c.hinge_axis2 = AxisPair(in).axis;
+      c.ratio = Float(in, -5, 5);
+      c.hinge1 = Helper(in, constraints);
+      c.hinge2 = Helper(in, constraints);
+      return c;
+    }
+    default: {
+      RackAndPinionConstraintSettings c;
+      Common(in, bodies, c);
+      c.hinge_axis1 = AxisPair(in).axis;
+      c.slider_axis2 = AxisPair(in).axis;
+      c.ratio = Float(in, -5, 5);
+      c.hinge = Helper(in, constraints);
+      c.slider = Helper(in, constraints);
+      return c;
+    }
+  }
+}
+
+StepSettings Settings(FuzzedDataProvider& in) {
+  StepSettings s;
+  // Mostly valid (the checks are tested once, in batch_test); sometimes not.
+  s.delta_time = in.ConsumeIntegral<std::uint8_t>() < 240 ? Float(in, 1e-4f, 0.1f)
+                                                         : Float(in, -1, 1);
+  s.substeps = in.ConsumeIntegralInRange<int>(in.ConsumeBool() ? 1 : -1, 3);
+  s.velocity_iterations = in.ConsumeIntegralInRange<int>(in.ConsumeBool() ? 0 : -1, 12);
+  s.position_iterations = in.ConsumeIntegralInRange<int>(0, 4);
+  s.baumgarte = Float(in, 0, 1);
+  s.warm_start = in.ConsumeBool();
+  if (in.ConsumeBool()) s.gravity = Vec(in, -20, 20);
+  s.unhealthy_worlds = in.ConsumeBool() ? UnhealthyWorlds::kKeep : UnhealthyWorlds::kReset;
+  return s;
+}
+
+std::vector<std::uint8_t> Mask(FuzzedDataProvider& in, std::size_t worlds) {
+  std::vector<std::uint8_t> mask(worlds);
+  for (auto& m : mask) m = in.ConsumeIntegral<std::uint8_t>() & 1;
+  return mask;
+}
+
+// Fills `values` with plausible state numbers and, here and there, bad ones;
+// rotations stay non-zero unless the input asks for a refused call.
+void FillState(FuzzedDataProvider& in, std::vector<float>& values) {
+  for (std::size_t i = 0; i < values.size() && in.remaining_bytes() > 0; ++i) {
+    if (in.ConsumeIntegral<std::uint8_t>() < 224) continue;  // keep the current value
+    values[i] = Float(in, -10, 10);
+  }
+}
+
+// One call of the batch API with random arguments; refusals are expected.
+void RandomCall(FuzzedDataProvider& in, Batch& batch) {
+  const std::size_t worlds = batch.world_count(), bodies = batch.body_count();
+  const std::size_t constraints = batch.constraint_count();
+  const std::size_t w = Index(in, worlds), b = Index(in, bodies), c = Index(in, constraints);
+  std::vector<float> state(worlds * bodies * kStateFloatsPerBody);
+  switch (in.ConsumeIntegralInRange<int>(0, 19)) {
+    case 0: batch.SetForce(w, b, Vec(in, -100, 100)); break;
+    case 1: batch.SetTorque(w, b, Vec(in, -100, 100)); break;
+    case 2: {
+      std::vector<float> per_world(worlds * 3);
+      for (float& v : per_world) v = Float(in, -100, 100);
+      if (in.ConsumeBool()) batch.SetForces(b, per_world); else batch.SetTorques(b, per_world);
+      break;
+    }
+    case 3: {
+      std::vector<float> all(worlds * bodies * 3 + (in.ConsumeIntegral<std::uint8_t>() >= 250));
+      for (float& v : all) v = Float(in, -100, 100);
+      if (in.ConsumeBool()) batch.SetForces(all); else batch.SetTorques(all);
+      break;
+    }
+    case 4: batch.SetTargetVelocity(w, c, Float(in, -10, 10)); break;
+    case 5: batch.SetTargetPosition(w, c, Float(in, -10, 10)); break;
+    case 6: {
+      std::vector<float> per_world(worlds);
+      for (float& v : per_world) v = Float(in, -10, 10);
+      if (in.ConsumeBool()) batch.SetTargetVelocities(c, per_world);
+      else batch.SetTargetPositions(c, per_world);
+      break;
+    }
+    case 7: {
+      batch.GetState(state);
+      FillState(in, state);
+      if (in.ConsumeBool()) batch.SetState(state, Mask(in, worlds)); else batch.SetState(state);
+      break;
+    }
+    case 8: {
+      const auto field = static_cast<StateField>(in.ConsumeIntegralInRange<int>(0, 3));
+      std::vector<float> values(worlds * bodies * StateFieldSize(field));
+      batch.GetField(field, values);
+      FillState(in, values);
+      batch.SetField(field, values);
+      break;
+    }
+    case 9: batch.Reset(Mask(in, worlds)); break;
+    case 10: {
+      batch.GetState(state);
+      FillState(in, state);
+      batch.ResetTo(Mask(in, worlds), state);
+      break;
+    }
+    case 11: batch.SetMassProperties(w, b, Float(in, 0.01f, 100), Vec(in, 0.001f, 10)); break;
+    case 12: batch.SetDamping(w, b, Float(in, 0, 2), Float(in, 0, 2)); break;
+    case 13: batch.SetGravityFactor(w, b, Float(in, -2, 2)); break;
+    case 14: batch.SetLimits(w, c, Float(in, -4, 0.5f), Float(in, -0.5f, 4)); break;
+    case 15: batch.SetLimitsSpring(w, c, Float(in, -1, 50), Float(in, 0, 5)); break;
+    case 16: batch.SetMotorSpring(w, c, Float(in, -1, 50), Float(in, 0, 5)); break;
+    case 17: batch.SetMotorLimits(w, c, Float(in, -100, 10), Float(in, -10, 100)); break;
+    case 18: batch.SetMaxFriction(w, c, Float(in, -1, 10)); break;
+    default: batch.SetRatio(w, c, Float(in, -5, 5)); break;
+  }
+}
+
+void Check(bool ok) {
+  if (!ok) __builtin_trap();
+}
+
+// The health flags after a step agree with the state the step left.
+void CheckHealth(const Batch& batch, const StepSettings& settings) {
+  const auto health = batch.WorldHealth();
+  Check(health.size() == batch.world_count());
+  const std::size_t floats = batch.body_count() * kStateFloatsPerBody;
+  std::vector<float> state(batch.world_count() * floats);
+  batch.GetState(state);
+  std::size_t unhealthy = 0;
+  for (std::size_t w = 0; w < batch.world_count(); ++w) {
+    Check((health[w] & ~0xF) == 0);
+    unhealthy += health[w] != 0;
+    bool finite = true;
+    for (std::size_t i = 0; i < floats; ++i) finite &= std::isfinite(state[w * floats + i]);
+    if (settings.unhealthy_worlds == UnhealthyWorlds::kReset) {
+      Check(finite);  // flagged worlds went back to the (finite) scene
+    } else if (!finite) {
+      Check((health[w] & kNonFiniteState) != 0);
+    }
+    (void)batch.MaxConstraintError(w);
+  }
+  Check(unhealthy == batch.UnhealthyWorldCount());
+}
+
+void Run(FuzzedDataProvider& in) {
+  Scene scene;
+  const std::size_t bodies = in.ConsumeIntegralInRange<std::size_t>(0, kMaxBodies);
+  for (std::size_t i = 0; i < bodies; ++i) scene.AddBody(Body(in));
+  const std::size_t constraints = in.ConsumeIntegralInRange<std::size_t>(0, kMaxConstraints);
+  for (std::size_t i = 0; i < constraints; ++i) {
+    scene.AddConstraint(Constraint(in, bodies, constraints));
+  }
+  const std::size_t worlds = in.ConsumeIntegralInRange<std::size_t>(0, kMaxWorlds);
+  BatchOptions options;
+  options.threads = in.ConsumeIntegralInRange<int>(0, 2);
+  options.blocks_per_task = in.ConsumeIntegralInRange<std::size_t>(0, 2);
+  switch (in.ConsumeIntegralInRange<int>(0, 7)) {
+    case 0: options.target = HWY_SCALAR; break;  // refused where EMU128 is built instead
+    case 1: options.target = HWY_SSE4; break;
+    case 2: options.target = HWY_AVX2; break;
+    case 3: options.target = HWY_AVX3; break;  // refused where the CPU lacks it
+    case 4: options.target = in.ConsumeIntegral<std::int64_t>(); break;
+    case 5: options.target = HWY_EMU128; break;  // clang's fallback (g++ 12.2: SCALAR)
+    default: break;  // dispatch
+  }
+
+  std::optional<Batch> batch;
+  try {
+    batch.emplace(scene, worlds, options);
+  } catch (const std::invalid_argument&) {  // SceneError is one
+    return;
+  } catch (const std::out_of_range&) {
+    return;
+  }
+
+  const int steps = in.ConsumeIntegralInRange<int>(1, kMaxSteps);
+  for (int step = 0; step < steps; ++step) {
+    const int calls = in.ConsumeIntegralInRange<int>(0, kMaxCallsPerStep);
+    for (int i = 0; i < calls; ++i) {
+      try {
+        RandomCall(in, *batch);
+      } catch (const std::invalid_argument&) {
+      } catch (const std::out_of_range&) {
+      }
+    }
+    const StepSettings settings = Settings(in);
+    try {
+      batch->Step(settings);
+    } catch (const SceneError&) {
+      continue;  // refused settings: nothing stepped
+    }
+    CheckHealth(*batch, settings);
+  }
+  if (in.ConsumeBool()) (void)batch->Plan();
+}
+
+}  // namespace
+}  // namespace manyworlds
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  FuzzedDataProvider in(data, size);
+  manyworlds::Run(in);
+  return 0;
+}
