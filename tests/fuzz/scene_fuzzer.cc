@@ -155,7 +155,7 @@ void Common(FuzzedDataProvider& in, std::size_t bodies, Settings& c) {
 
 ConstraintSettings Constraint(FuzzedDataProvider& in, std::size_t bodies,
                               std::size_t constraints) {
-  switch (in.ConsumeIntegralInRange<int>(0, 5)) {
+  switch (in.ConsumeIntegralInRange<int>(0, 9)) {
     case 0: {
       PointConstraintSettings c;
       Common(in, bodies, c);
@@ -224,7 +224,7 @@ ConstraintSettings Constraint(FuzzedDataProvider& in, std::size_t bodies,
       c.hinge2 = Helper(in, constraints);
       return c;
     }
-    default: {
+    case 5: {
       RackAndPinionConstraintSettings c;
       Common(in, bodies, c);
       c.hinge_axis1 = AxisPair(in).axis;
@@ -232,6 +232,54 @@ ConstraintSettings Constraint(FuzzedDataProvider& in, std::size_t bodies,
       c.ratio = Float(in, -5, 5);
       c.hinge = Helper(in, constraints);
       c.slider = Helper(in, constraints);
+      return c;
+    }
+    case 6: {
+      DistanceConstraintSettings c;
+      Common(in, bodies, c);
+      c.point1 = Vec(in, -5, 5);
+      c.point2 = in.ConsumeBool() ? c.point1 : Vec(in, -5, 5);  // zero length too
+      c.min_distance = Float(in, -2, 5);
+      c.max_distance = Float(in, -2, 5);
+      if (in.ConsumeBool()) c.limits_spring = Spring(in);
+      return c;
+    }
+    case 7: {
+      PulleyConstraintSettings c;
+      Common(in, bodies, c);
+      c.body_point1 = Vec(in, -5, 5);
+      c.fixed_point1 = in.ConsumeBool() ? c.body_point1 : Vec(in, -5, 5);
+      c.body_point2 = Vec(in, -5, 5);
+      c.fixed_point2 = Vec(in, -5, 5);
+      c.ratio = Float(in, -1, 4);
+      c.min_length = Float(in, -2, 5);
+      c.max_length = Float(in, -2, 10);
+      return c;
+    }
+    case 8: {
+      ConeConstraintSettings c;
+      Common(in, bodies, c);
+      c.point1 = Vec(in, -5, 5);
+      c.point2 = in.ConsumeBool() ? c.point1 : Vec(in, -5, 5);
+      c.twist_axis1 = AxisPair(in).axis;
+      c.twist_axis2 = in.ConsumeBool() ? c.twist_axis1 : AxisPair(in).axis;
+      c.half_cone_angle = Float(in, -0.5f, 3.5f);
+      return c;
+    }
+    default: {
+      SwingTwistConstraintSettings c;
+      Common(in, bodies, c);
+      c.point1 = Vec(in, -5, 5);
+      c.point2 = in.ConsumeBool() ? c.point1 : Vec(in, -5, 5);
+      const Frame f1 = AxisPair(in), f2 = in.ConsumeBool() ? f1 : AxisPair(in);
+      c.twist_axis1 = f1.axis, c.plane_axis1 = f1.normal;
+      c.twist_axis2 = f2.axis, c.plane_axis2 = f2.normal;
+      c.swing_type = in.ConsumeBool() ? SwingType::kCone : SwingType::kPyramid;
+      // Locked (within 0.5 deg), limited and free (beyond 179.5 deg) axes.
+      c.normal_half_cone_angle = Float(in, 0, 3.3f);
+      c.plane_half_cone_angle = Float(in, 0, 3.3f);
+      c.twist_min_angle = Float(in, -3.3f, 0.2f);
+      c.twist_max_angle = Float(in, -0.2f, 3.3f);
       return c;
     }
   }
