@@ -522,10 +522,12 @@ TEST_P(SceneComparisonTest, EveryLaneMatchesTheReferenceStepByStep) {
               all_float_ref.position, all_float_ref.rotation, all_float_ref.velocity);
 }
 
-TEST_P(SceneComparisonTest, MotorDrivenScenesFollowTheReferenceTrajectory) {
-  if (scene_id() != "rackpinion" && scene_id() != "geartrain") {
-    GTEST_SKIP() << "chaotic scene: compared step by step only";
-  }
+// Whole trajectories only for the motor-driven scenes (instantiated for
+// rackpinion and geartrain below): the others are chaotic and compared step
+// by step only.
+class MotorDrivenTrajectoryTest : public SceneComparisonTest {};
+
+TEST_P(MotorDrivenTrajectoryTest, FollowsTheReferenceTrajectory) {
   const Scene scene = MakeReferenceScene(scene_id());
   Batch batch(scene, kWorlds, options());
   std::vector<reference::World<double>> worlds(kWorlds, reference::World<double>(scene));
@@ -566,6 +568,14 @@ INSTANTIATE_TEST_SUITE_P(
       std::string name = std::get<0>(info.param) + "_" +
                          hwy::TargetName(std::get<1>(info.param));
       return name;
+    });
+
+INSTANTIATE_TEST_SUITE_P(
+    MotorDrivenScenes, MotorDrivenTrajectoryTest,
+    ::testing::Combine(::testing::Values("rackpinion", "geartrain"),
+                       ::testing::ValuesIn(SupportedStepTargets())),
+    [](const auto& info) {
+      return std::get<0>(info.param) + "_" + hwy::TargetName(std::get<1>(info.param));
     });
 
 }  // namespace
