@@ -19,8 +19,6 @@
 #define MANYWORLDS_BATCH_CONE_CONSTRAINT_INL_H_
 #endif
 
-#include <cfloat>
-
 #include "batch/constraint_block.h"
 #include "kernels/angle-inl.h"
 #include "kernels/point-inl.h"
@@ -45,11 +43,11 @@ inline void ConeRotationProperties(const ConstraintBlock& c) {
     const LaneMask outside = hn::Lt(cos_theta, cos_alpha);
     const Vec3 cross = Cross(t2, t1);
     const LaneVec length = hn::Sqrt(LengthSquared(cross));
-    const LaneMask turns = hn::And(outside, hn::Gt(length, Zero()));
-    const LaneVec divisor = hn::IfThenElse(turns, length, Splat(1.0f));
-    const Vec3 unit{hn::Div(cross.x, divisor), hn::Div(cross.y, divisor),
-                    hn::Div(cross.z, divisor)};
-    StoreVec3(Select(turns, unit, LoadVec3(s.geometry.axis, offset)), s.geometry.axis, offset);
+    // The axis only changes outside the cone, and keeps its last direction
+    // where t2 x t1 is zero.
+    const Vec3 previous = LoadVec3(s.geometry.axis, offset);
+    StoreVec3(Select(outside, DirectionOrPrevious(cross, length, previous), previous),
+              s.geometry.axis, offset);
     Store(cos_theta, s.cos_theta, offset);
     Store(hn::IfThenElseZero(outside, hn::Sub(cos_theta, cos_alpha)), s.geometry.error, offset);
     StoreFlags(hn::Not(outside), inside, offset);

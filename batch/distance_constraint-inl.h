@@ -48,13 +48,7 @@ inline void DistanceProperties(const ConstraintBlock& c, const StepScalars& step
                                    LoadVec3(s.anchors.r2_local, offset)));
     const Vec3 separation = Sub(p2, p1);
     const LaneVec length = hn::Sqrt(LengthSquared(separation));
-    const LaneMask has_length = hn::Gt(length, Zero());
-    // n = separation / L as Jolt divides; lanes with L = 0 divide by 1 and
-    // keep the stored normal.
-    const LaneVec divisor = hn::IfThenElse(has_length, length, Splat(1.0f));
-    const Vec3 unit{hn::Div(separation.x, divisor), hn::Div(separation.y, divisor),
-                    hn::Div(separation.z, divisor)};
-    const Vec3 normal = Select(has_length, unit, LoadVec3(s.normal, offset));
+    const Vec3 normal = DirectionOrPrevious(separation, length, LoadVec3(s.normal, offset));
     StoreVec3(normal, s.normal, offset);
     StoreVec3(p1, s.world_point1, offset);
     StoreVec3(p2, s.world_point2, offset);

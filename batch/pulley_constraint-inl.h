@@ -20,9 +20,8 @@
 #define MANYWORLDS_BATCH_PULLEY_CONSTRAINT_INL_H_
 #endif
 
-#include <cfloat>
-
 #include "batch/constraint_block.h"
+#include "batch/drive_and_limit_rows-inl.h"
 #include "kernels/independent_axis-inl.h"
 
 HWY_BEFORE_NAMESPACE();
@@ -52,16 +51,6 @@ HWY_INLINE PulleySegments PulleySegmentsOfChunk(const ConstraintBlock& c,
   return seg;
 }
 
-// offset / length as Jolt divides, or `previous` where the length is zero.
-HWY_INLINE Vec3 DirectionOrPrevious(const Vec3& offset_vector, LaneVec length,
-                                    const Vec3& previous) {
-  const LaneMask has_length = hn::Gt(length, Zero());
-  const LaneVec divisor = hn::IfThenElse(has_length, length, Splat(1.0f));
-  const Vec3 unit{hn::Div(offset_vector.x, divisor), hn::Div(offset_vector.y, divisor),
-                  hn::Div(offset_vector.z, divisor)};
-  return Select(has_length, unit, previous);
-}
-
 // Lever arms, normals, impulse range and the row at the current poses.
 inline void PulleyProperties(const ConstraintBlock& c) {
   auto& s = c.Main<PulleyConstraintLanes>();
@@ -79,12 +68,8 @@ inline void PulleyProperties(const ConstraintBlock& c) {
     const LaneMask fixed = hn::Eq(min, max);
     const LaneMask at_min = hn::Le(seg.length, min);
     const LaneMask at_max = hn::Ge(seg.length, max);
-    const LaneVec unbounded = Splat(FLT_MAX);
     // [0, inf) at the minimum, (-inf, 0] at the maximum, both when fixed.
-    Store(hn::IfThenElse(hn::Or(fixed, hn::Not(at_min)), hn::Neg(unbounded), Zero()),
-          s.geometry.min_lambda, offset);
-    Store(hn::IfThenElse(hn::Or(fixed, at_min), unbounded, Zero()), s.geometry.max_lambda,
-          offset);
+    StoreLimitImpulseRange(at_min, fixed, s.geometry, offset);
     StoreFlags(hn::Not(hn::Or(fixed, hn::Or(at_min, at_max))), inside, offset);
   });
   IndependentAxisCalculateProperties(c.bodies, s.geometry, s.part);

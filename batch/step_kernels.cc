@@ -104,12 +104,11 @@ inline bool SolveConstraintPosition(const StepPlan& plan, const ConstraintBlock&
 
 bool StepBlock(const StepPlan& plan, std::byte* block, const StepParams& params) {
   const std::size_t constraint_count = plan.constraints.size();
-  // ConstraintBlocks are cheap views; build them once per call.
-  std::vector<ConstraintBlock> constraints;
-  constraints.reserve(constraint_count);
-  for (std::size_t i = 0; i < constraint_count; ++i) {
-    constraints.push_back(ConstraintInBlock(plan, i, block));
-  }
+  // Views of the plan's constraints in this block, in solve order: a few
+  // offsets each, so built per pass rather than allocated per block.
+  const auto for_each_constraint = [&](auto&& verb) {
+    for (std::size_t i = 0; i < constraint_count; ++i) verb(ConstraintInBlock(plan, i, block));
+  };
   const LaneVec dt = Splat(params.substep_delta_time);
   const Vec3 gravity{Splat(params.gravity[0]), Splat(params.gravity[1]),
                      Splat(params.gravity[2])};
@@ -130,11 +129,12 @@ bool StepBlock(const StepPlan& plan, std::byte* block, const StepParams& params)
     }
 
     if (constraint_count != 0) {
-      for (const ConstraintBlock& c : constraints) SetupConstraint(c, step);
-      for (const ConstraintBlock& c : constraints) WarmStartConstraint(c, step);
+      for_each_constraint([&](const ConstraintBlock& c) { SetupConstraint(c, step); });
+      for_each_constraint([&](const ConstraintBlock& c) { WarmStartConstraint(c, step); });
       for (int iteration = 0; iteration < params.velocity_iterations; ++iteration) {
         bool applied = false;
-        for (const ConstraintBlock& c : constraints) applied |= SolveConstraintVelocity(c);
+        for_each_constraint(
+            [&](const ConstraintBlock& c) { applied |= SolveConstraintVelocity(c); });
         if (!applied) break;
       }
     }
@@ -151,9 +151,8 @@ bool StepBlock(const StepPlan& plan, std::byte* block, const StepParams& params)
     if (constraint_count != 0) {
       for (int iteration = 0; iteration < params.position_iterations; ++iteration) {
         bool applied = false;
-        for (const ConstraintBlock& c : constraints) {
-          applied |= SolveConstraintPosition(plan, c, step);
-        }
+        for_each_constraint(
+            [&](const ConstraintBlock& c) { applied |= SolveConstraintPosition(plan, c, step); });
         if (!applied) break;
       }
     }

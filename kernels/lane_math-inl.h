@@ -742,6 +742,18 @@ HWY_INLINE void StoreActiveLanes(const PartLanes& part, LaneFlags& active) {
   });
 }
 
+// offset / length (divided as Jolt divides, per component), or `previous`
+// where the length is not positive: the direction of a rope, rod or cone
+// axis that keeps its last direction when it degenerates (spec 5).
+HWY_INLINE Vec3 DirectionOrPrevious(const Vec3& offset_vector, LaneVec length,
+                                    const Vec3& previous) {
+  const LaneMask has_length = hn::Gt(length, Zero());
+  const LaneVec divisor = hn::IfThenElse(has_length, length, Splat(1.0f));
+  const Vec3 unit{hn::Div(offset_vector.x, divisor), hn::Div(offset_vector.y, divisor),
+                  hn::Div(offset_vector.z, divisor)};
+  return Select(has_length, unit, previous);
+}
+
 // For a struct made only of LaneArrays: the lanes of `value` that are not set
 // in `changed` get `previous`'s bits back. For verbs that Jolt runs in some
 // worlds only (a recompute where a position error is non-zero): run them in

@@ -32,6 +32,7 @@
 #include "manyworlds/error.h"
 #include "manyworlds/scene.h"
 #include "reference/world.h"
+#include "tests/lane_vs_reference.h"
 #include "tests/step_targets.h"
 
 namespace manyworlds {
@@ -482,50 +483,6 @@ Scene MixedDofScene() {
   hang.point1 = hang.point2 = {-0.4f, 0.2f, 0.0f};
   scene.AddConstraint(hang);
   return scene;
-}
-
-struct Deviation {
-  double position = 0, rotation = 0, velocity = 0;
-  void Max(const Deviation& other) {
-    position = std::max(position, other.position);
-    rotation = std::max(rotation, other.rotation);
-    velocity = std::max(velocity, other.velocity);
-  }
-};
-
-// As tests/scene_comparison_test.cc: in units of FLT_EPSILON x max(1, |value|).
-template <class T>
-Deviation Compare(const float* lane, const reference::Body<T>& body) {
-  Deviation d;
-  const auto rel = [](double got, double want) {
-    return std::abs(got - want) / (FLT_EPSILON * std::max(1.0, std::abs(want)));
-  };
-  for (int i = 0; i < 3; ++i) d.position = std::max(d.position, rel(lane[i], body.position[i]));
-  const double q[4] = {double(body.rotation.x()), double(body.rotation.y()),
-                       double(body.rotation.z()), double(body.rotation.w())};
-  double dot = 0;
-  for (int i = 0; i < 4; ++i) dot += q[i] * lane[3 + i];
-  const double sign = dot < 0 ? -1.0 : 1.0;
-  for (int i = 0; i < 4; ++i) {
-    d.rotation = std::max(d.rotation, std::abs(lane[3 + i] - sign * q[i]) / FLT_EPSILON);
-  }
-  for (int i = 0; i < 3; ++i) {
-    d.velocity = std::max(d.velocity, rel(lane[7 + i], body.linear_velocity[i]));
-    d.velocity = std::max(d.velocity, rel(lane[10 + i], body.angular_velocity[i]));
-  }
-  return d;
-}
-
-template <class T>
-void SetReferenceState(reference::World<T>& world, const float* lane_bodies) {
-  for (std::size_t b = 0; b < world.body_count(); ++b) {
-    const float* s = lane_bodies + b * kStateFloatsPerBody;
-    reference::Body<T>& body = world.body(b);
-    body.position = reference::Vec3<T>(s[0], s[1], s[2]);
-    body.rotation = reference::Quat<T>(s[6], s[3], s[4], s[5]);
-    body.linear_velocity = reference::Vec3<T>(s[7], s[8], s[9]);
-    body.angular_velocity = reference::Vec3<T>(s[10], s[11], s[12]);
-  }
 }
 
 // The bound of scene_comparison_test's scenes with a few rows per world (32

@@ -384,6 +384,18 @@ TEST_P(JoltBehaviourTest, SliderReferenceFrame) {
   EXPECT_VEC_NEAR("com_distance", world->Position(b2), world->Position(b1), 1e-2);
 }
 
+// Jolt's spring tests give the same spring either as stiffness and damping
+// (k, c) or as frequency and damping ratio.
+SpringSettings SpringInMode(SpringMode mode, double k, double c, double frequency,
+                            double damping_ratio) {
+  SpringSettings spring;
+  spring.mode = mode;
+  const bool stiffness = mode == SpringMode::kStiffnessAndDamping;
+  spring.frequency_or_stiffness = float(stiffness ? k : frequency);
+  spring.damping = float(stiffness ? c : damping_ratio);
+  return spring;
+}
+
 // The implicit-Euler spring of Catto's "Soft Constraints" (GDC 2011, p. 32) that
 // Jolt's spring tests compare with: v' = (v − dt·k/m·x) / (1 + dt·c/m + dt²·k/m),
 // x' = x + dt·v'. Computed in double.
@@ -419,14 +431,7 @@ TEST_P(JoltBehaviourTest, SliderSpring) {
     slider.body2 = sphere;
     slider.point2 = {10, 0, 0};
     slider.limits_min = slider.limits_max = 0.0f;
-    slider.limits_spring.mode = mode;
-    if (mode == SpringMode::kStiffnessAndDamping) {
-      slider.limits_spring.frequency_or_stiffness = float(k);
-      slider.limits_spring.damping = float(c);
-    } else {
-      slider.limits_spring.frequency_or_stiffness = float(kFrequency);
-      slider.limits_spring.damping = float(kDamping);
-    }
+    slider.limits_spring = SpringInMode(mode, k, c, kFrequency, kDamping);
     scene.AddConstraint(slider);
 
     const std::unique_ptr<Stepper> world = Make(scene);
@@ -466,14 +471,7 @@ TEST_P(JoltBehaviourTest, DistanceSpring) {
     distance.point1 = {0, 0, 0};
     distance.point2 = {10, 0, 0};
     distance.min_distance = distance.max_distance = 0.0f;
-    distance.limits_spring.mode = mode;
-    if (mode == SpringMode::kStiffnessAndDamping) {
-      distance.limits_spring.frequency_or_stiffness = float(k);
-      distance.limits_spring.damping = float(c);
-    } else {
-      distance.limits_spring.frequency_or_stiffness = float(kFrequency);
-      distance.limits_spring.damping = float(kDamping);
-    }
+    distance.limits_spring = SpringInMode(mode, k, c, kFrequency, kDamping);
     scene.AddConstraint(distance);
 
     const std::unique_ptr<Stepper> world = Make(scene);
@@ -740,14 +738,7 @@ TEST_P(JoltBehaviourTest, HingeSpring) {
     hinge.hinge_axis1 = hinge.hinge_axis2 = {0, 1, 0};
     hinge.normal_axis1 = hinge.normal_axis2 = {1, 0, 0};
     hinge.limits_min = hinge.limits_max = 0.0f;
-    hinge.limits_spring.mode = mode;
-    if (mode == SpringMode::kStiffnessAndDamping) {
-      hinge.limits_spring.frequency_or_stiffness = float(k);
-      hinge.limits_spring.damping = float(c);
-    } else {
-      hinge.limits_spring.frequency_or_stiffness = float(kFrequency);
-      hinge.limits_spring.damping = float(kDamping);
-    }
+    hinge.limits_spring = SpringInMode(mode, k, c, kFrequency, kDamping);
     scene.AddConstraint(hinge);
 
     const std::unique_ptr<Stepper> world = Make(scene);

@@ -41,6 +41,7 @@
 #include "manyworlds/batch.h"
 #include "manyworlds/scenes.h"
 #include "reference/world.h"
+#include "tests/lane_vs_reference.h"
 #include "tests/step_targets.h"
 
 namespace manyworlds {
@@ -49,64 +50,6 @@ namespace {
 constexpr int kSteps = 300;
 constexpr std::size_t kWorlds = 20;  // two blocks, the second mostly padding
 constexpr std::uint64_t kSeed = 7;
-
-struct Deviation {
-  double position = 0, rotation = 0, velocity = 0;
-  void Max(const Deviation& other) {
-    position = std::max(position, other.position);
-    rotation = std::max(rotation, other.rotation);
-    velocity = std::max(velocity, other.velocity);
-  }
-};
-
-// The lane's body state, relative to the reference body, in units of
-// FLT_EPSILON * scale (see the header comment).
-template <class T>
-Deviation Compare(const float* lane, const reference::Body<T>& body) {
-  Deviation d;
-  for (int i = 0; i < 3; ++i) {
-    const double x = body.position[i];
-    d.position = std::max(d.position, std::abs(lane[i] - x) / (FLT_EPSILON * std::max(1.0, std::abs(x))));
-  }
-  const double q[4] = {double(body.rotation.x()), double(body.rotation.y()),
-                       double(body.rotation.z()), double(body.rotation.w())};
-  double dot = 0;
-  for (int i = 0; i < 4; ++i) dot += q[i] * lane[3 + i];
-  const double sign = dot < 0 ? -1.0 : 1.0;  // q and -q are the same rotation
-  for (int i = 0; i < 4; ++i) {
-    d.rotation = std::max(d.rotation, std::abs(lane[3 + i] - sign * q[i]) / FLT_EPSILON);
-  }
-  for (int i = 0; i < 3; ++i) {
-    const double v = body.linear_velocity[i], w = body.angular_velocity[i];
-    d.velocity = std::max(d.velocity, std::abs(lane[7 + i] - v) / (FLT_EPSILON * std::max(1.0, std::abs(v))));
-    d.velocity = std::max(d.velocity, std::abs(lane[10 + i] - w) / (FLT_EPSILON * std::max(1.0, std::abs(w))));
-  }
-  return d;
-}
-
-// A reference body's state as the 13 floats of a state array.
-template <class T>
-std::array<float, kStateFloatsPerBody> FloatStateArray(const reference::Body<T>& body) {
-  return {float(body.position.x()),         float(body.position.y()),
-          float(body.position.z()),         float(body.rotation.x()),
-          float(body.rotation.y()),         float(body.rotation.z()),
-          float(body.rotation.w()),         float(body.linear_velocity.x()),
-          float(body.linear_velocity.y()),  float(body.linear_velocity.z()),
-          float(body.angular_velocity.x()), float(body.angular_velocity.y()),
-          float(body.angular_velocity.z())};
-}
-
-template <class T>
-void SetReferenceState(reference::World<T>& world, const float* lane_bodies) {
-  for (std::size_t b = 0; b < world.body_count(); ++b) {
-    const float* s = lane_bodies + b * kStateFloatsPerBody;
-    reference::Body<T>& body = world.body(b);
-    body.position = reference::Vec3<T>(s[0], s[1], s[2]);
-    body.rotation = reference::Quat<T>(s[6], s[3], s[4], s[5]);
-    body.linear_velocity = reference::Vec3<T>(s[7], s[8], s[9]);
-    body.angular_velocity = reference::Vec3<T>(s[10], s[11], s[12]);
-  }
-}
 
 // Every constraint type and feature, out of plane, with uneven bodies: the
 // reference scenes are planar (hinges about Z), which leaves the hinge
