@@ -77,13 +77,17 @@ HWY_INLINE void ApplyGyroscopicStep(BodyLanes& body, LaneVec h) {
       const Vec3 wm = Scale(Add(w0, w1), half);
       const Vec3 iwm = times_inertia(wm);
       const Vec3 g = MulAdd(Cross(wm, iwm), h, times_inertia(Sub(w1, w0)));
-      // J = I + h/2 (S(wm) I - S(I wm)); (S(a) M)[r][c] = S(a)[r][c] M[c][c].
-      const Vec3 r0{inertia.x, hn::Mul(half_h, hn::MulSub(hn::Neg(wm.z), inertia.y, hn::Neg(iwm.z))),
-                    hn::Mul(half_h, hn::MulSub(wm.y, inertia.z, iwm.y))};
-      const Vec3 r1{hn::Mul(half_h, hn::MulSub(wm.z, inertia.x, iwm.z)), inertia.y,
-                    hn::Mul(half_h, hn::MulSub(hn::Neg(wm.x), inertia.z, hn::Neg(iwm.x)))};
-      const Vec3 r2{hn::Mul(half_h, hn::MulSub(hn::Neg(wm.y), inertia.x, hn::Neg(iwm.y))),
-                    hn::Mul(half_h, hn::MulSub(wm.x, inertia.y, iwm.x)), inertia.z};
+      // J = I + h/2 (S(wm) I - S(I wm)): off the diagonal, row r and column c
+      // hold h/2 (S(wm)[r][c] I[c] - S(I wm)[r][c]); S's diagonal is zero.
+      const auto off = [&](LaneVec s_w, LaneVec inertia_c, LaneVec s_iw) {
+        return hn::Mul(half_h, hn::MulSub(s_w, inertia_c, s_iw));
+      };
+      const Vec3 r0{inertia.x, off(hn::Neg(wm.z), inertia.y, hn::Neg(iwm.z)),
+                    off(wm.y, inertia.z, iwm.y)};
+      const Vec3 r1{off(wm.z, inertia.x, iwm.z), inertia.y,
+                    off(hn::Neg(wm.x), inertia.z, hn::Neg(iwm.x))};
+      const Vec3 r2{off(hn::Neg(wm.y), inertia.x, hn::Neg(iwm.y)), off(wm.x, inertia.y, iwm.x),
+                    inertia.z};
       const Vec3 c0 = Cross(r1, r2), c1 = Cross(r2, r0), c2 = Cross(r0, r1);
       const LaneVec det = Dot(r0, c0);
       solved = hn::And(solved, hn::Gt(det, Zero()));

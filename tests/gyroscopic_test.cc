@@ -67,7 +67,8 @@ Deviation CompareTurningBody(const float* lane, const reference::Body<T>& body) 
        {std::pair{7, body.linear_velocity}, std::pair{10, body.angular_velocity}}) {
     const double scale = FLT_EPSILON * std::max(1.0, double(want.norm()));
     for (int i = 0; i < 3; ++i) {
-      d.velocity = std::max(d.velocity, std::abs(double(lane[offset + i]) - double(want[i])) / scale);
+      const double error = std::abs(double(lane[offset + i]) - double(want[i]));
+      d.velocity = std::max(d.velocity, error / scale);
     }
   }
   return d;

@@ -216,7 +216,7 @@ struct Expectation {
   double joint_error;     // bound at the default settings; kInfinity where Jolt fails it
   double rest_time;       // s; kInfinity where the scene does not start off its rest pose
   double energy_added;    // J a motor may add
-  int remedy_substeps;    // substeps that meet kChainJointError where Jolt fails it (0: none needed)
+  int remedy_substeps;    // substeps that meet kChainJointError where Jolt fails it (0: none)
   const char* why;
 };
 
@@ -431,7 +431,7 @@ Spin RunSpin(const StepSettings& settings, const std::string& label) {
   const double e0 = 0.5 * Dot(w0, l0);
   Spin spin;
   double sign = 1;
-  const Figures f = RunScene("spin-unstable", settings, [&](long step, const std::vector<float>& s) {
+  const auto each_step = [&](long step, const std::vector<float>& s) {
     const BodyState state = BodyOf(s, stress_scene::kBody);
     const V3 w = BodyAngularVelocity(state);
     const V3 l = AngularMomentum(body, state);
@@ -444,7 +444,8 @@ Spin RunSpin(const StepSettings& settings, const std::string& label) {
       ++spin.flips;
       spin.first_flip = std::min(spin.first_flip, double(step + 1) * settings.delta_time);
     }
-  });
+  };
+  const Figures f = RunScene("spin-unstable", settings, each_step);
   EXPECT_TRUE(f.finite) << label;
   Report("spin-unstable", label + ".flips", spin.flips);
   Report("spin-unstable", label + ".first_flip_s", spin.first_flip);
