@@ -99,6 +99,7 @@ class Batch::Impl {
     params.position_iterations = settings.position_iterations;
     params.baumgarte = settings.baumgarte;
     params.gravity = settings.gravity;
+    params.gyroscopic = settings.gyroscopic;
     previous_substep_dt_ = substep_dt;
 
     const std::size_t grain =

@@ -128,6 +128,7 @@ bool StepBlock(const StepPlan& plan, std::byte* block, const StepParams& params)
 
     for (const BodyPlan& body : plan.bodies) {
       if (body.motion != MotionType::kDynamic) continue;
+      if (params.gyroscopic) ApplyGyroscopicStep(At<BodyLanes>(block, body.offset), dt);
       ApplyForcesAndDamping(At<BodyLanes>(block, body.offset),
                             At<BodyMotionLanes>(block, body.motion_offset), gravity, dt,
                             health);

@@ -19,6 +19,7 @@ struct StepParams {
   int position_iterations;
   float baumgarte;
   Float3 gravity;
+  bool gyroscopic;  // StepSettings::gyroscopic
 };
 
 struct StepKernels {

@@ -2,6 +2,8 @@
 // Jolt's step (spec 4.1, steps 1 and 6).
 //
 // Forces (dynamic bodies, once per substep, before the constraints):
+//   with StepSettings::gyroscopic only, w <- the implicit-midpoint gyroscopic
+//   step (ApplyGyroscopicStep below, derived in reference/gyroscopic.h); then
 //   v <- lockT(v + dt (gravity_factor g + m^-1 F))
 //   w <- w + dt I^-1 tau                     (inertia at the current rotation,
 //                                             locked rotation axes masked)
@@ -41,6 +43,65 @@ HWY_INLINE Vec3 ClampLength(const Vec3& v, LaneVec max_length) {
   const LaneMask too_fast = hn::Gt(length_squared, hn::Mul(max_length, max_length));
   const LaneVec scale = hn::Div(max_length, hn::Sqrt(length_squared));
   return Select(too_fast, Scale(v, scale), v);
+}
+
+// The opt-in gyroscopic step (StepSettings::gyroscopic) for one dynamic body
+// of a block, before its forces in every substep: the implicit-midpoint
+// solution of Euler's torque-free equations in the principal frame, two
+// Newton steps, a lane whose Jacobian determinant is not positive keeping its
+// w, and the result rescaled to the energy of w. The derivation, and why
+// this stays stable for any step, is at the top of reference/gyroscopic.h,
+// which this follows operation for operation. Lanes whose rotation DOFs are
+// restricted keep w.
+HWY_INLINE void ApplyGyroscopicStep(BodyLanes& body, LaneVec h) {
+  const LaneVec half = Splat(0.5f);
+  const LaneVec half_h = hn::Mul(half, h);
+  ForEachChunk([&](std::size_t offset) {
+    const Quat to_world =
+        Mul(LoadQuat(body.rotation, offset), LoadQuat(body.inertia_rotation, offset));
+    const Vec3 w_world = LoadVec3(body.angular_velocity, offset);
+    const Vec3 w0 = InverseRotate(to_world, w_world);
+    const Vec3 d = LoadVec3(body.inv_inertia_diagonal, offset);
+    const Vec3 inertia{hn::Div(Splat(1.0f), d.x), hn::Div(Splat(1.0f), d.y),
+                       hn::Div(Splat(1.0f), d.z)};
+    const auto times_inertia = [&](const Vec3& v) {
+      return Vec3{hn::Mul(inertia.x, v.x), hn::Mul(inertia.y, v.y), hn::Mul(inertia.z, v.z)};
+    };
+    LaneMask solved = AllLanes();
+    if (DofRestricted(body)) {
+      const Vec3 locked = LoadVec3(body.rotation_locked, offset);
+      solved = hn::Not(AnyComponentNonZero(locked));
+    }
+    Vec3 w1 = w0;
+    for (int newton = 0; newton < 2; ++newton) {
+      const Vec3 wm = Scale(Add(w0, w1), half);
+      const Vec3 iwm = times_inertia(wm);
+      const Vec3 g = MulAdd(Cross(wm, iwm), h, times_inertia(Sub(w1, w0)));
+      // J = I + h/2 (S(wm) I - S(I wm)): off the diagonal, row r and column c
+      // hold h/2 (S(wm)[r][c] I[c] - S(I wm)[r][c]); S's diagonal is zero.
+      const auto off = [&](LaneVec s_w, LaneVec inertia_c, LaneVec s_iw) {
+        return hn::Mul(half_h, hn::MulSub(s_w, inertia_c, s_iw));
+      };
+      const Vec3 r0{inertia.x, off(hn::Neg(wm.z), inertia.y, hn::Neg(iwm.z)),
+                    off(wm.y, inertia.z, iwm.y)};
+      const Vec3 r1{off(wm.z, inertia.x, iwm.z), inertia.y,
+                    off(hn::Neg(wm.x), inertia.z, hn::Neg(iwm.x))};
+      const Vec3 r2{off(hn::Neg(wm.y), inertia.x, hn::Neg(iwm.y)), off(wm.x, inertia.y, iwm.x),
+                    inertia.z};
+      const Vec3 c0 = Cross(r1, r2), c1 = Cross(r2, r0), c2 = Cross(r0, r1);
+      const LaneVec det = Dot(r0, c0);
+      solved = hn::And(solved, hn::Gt(det, Zero()));
+      const Vec3 step = MulAdd(c0, g.x, MulAdd(c1, g.y, Scale(c2, g.z)));
+      // Lanes already given up divide by 1, not by a zero determinant.
+      w1 = Sub(w1, Scale(step, hn::Div(Splat(1.0f), hn::IfThenElse(solved, det, Splat(1.0f)))));
+    }
+    const LaneVec energy0 = Dot(w0, times_inertia(w0));
+    const LaneVec energy1 = Dot(w1, times_inertia(w1));
+    solved = hn::And(solved, hn::And(hn::Gt(energy1, Zero()), hn::IsFinite(energy1)));
+    const LaneVec safe_energy1 = hn::IfThenElse(solved, energy1, Splat(1.0f));
+    w1 = Scale(w1, hn::Sqrt(hn::Div(energy0, safe_energy1)));
+    StoreVec3(Select(solved, Rotate(to_world, w1), w_world), body.angular_velocity, offset);
+  });
 }
 
 // Step 1 for one dynamic body of a block; clears the force and torque after

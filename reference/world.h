@@ -10,7 +10,9 @@
 //           warm_start is off); only the first sub-step uses it, later sub-steps
 //           use 1 (spec 4.1). dt_prev := dt.
 //   n times:
-//     1. dynamic bodies:  v ← lockT(v + dt·(g_factor·g + m⁻¹F)),  ω ← ω + dt·I⁻¹τ,
+//     1. dynamic bodies:  with settings.gyroscopic, ω ← the implicit-midpoint
+//                         gyroscopic step (reference/gyroscopic.h); then
+//                         v ← lockT(v + dt·(g_factor·g + m⁻¹F)),  ω ← ω + dt·I⁻¹τ,
 //                         v ← v·max(0, 1 − c_lin·dt),  ω ← ω·max(0, 1 − c_ang·dt),
 //                         clamp |v| ≤ v_max, |ω| ≤ ω_max (uniform rescale)
 //     2. constraints with at least one dynamic body (Jolt solves no others), in
@@ -49,6 +51,7 @@
 #include "reference/distance_constraint.h"
 #include "reference/fixed_constraint.h"
 #include "reference/gear_constraint.h"
+#include "reference/gyroscopic.h"
 #include "reference/hinge_constraint.h"
 #include "reference/math.h"
 #include "reference/point_constraint.h"
@@ -286,11 +289,13 @@ class World {
     clamp(body.angular_velocity, motion.max_angular_velocity);
   }
 
-  // Step 1: gravity, forces, damping, clamps (dynamic bodies).
-  void ApplyForcesAndDamping(T dt, const Vec3<T>& gravity) {
+  // Step 1: the opt-in gyroscopic step (reference/gyroscopic.h), gravity,
+  // forces, damping, clamps (dynamic bodies).
+  void ApplyForcesAndDamping(T dt, const Vec3<T>& gravity, bool gyroscopic) {
     for (std::size_t i = 0; i < bodies_.size(); ++i) {
       Body<T>& body = bodies_[i];
       if (!body.IsDynamic()) continue;
+      if (gyroscopic) ApplyGyroscopicStep(body, dt);
       const BodyMotionSettings<T>& motion = motion_[i];
       body.AddLinearVelocityStep(dt *
                                  (motion.gravity_factor * gravity + body.inv_mass * motion.force));
@@ -339,7 +344,7 @@ class World {
   }
 
   void StepOnce(const StepSettings& settings, T dt, T warm_start_ratio) {
-    ApplyForcesAndDamping(dt, ToVec3<T>(settings.gravity));
+    ApplyForcesAndDamping(dt, ToVec3<T>(settings.gravity), settings.gyroscopic);
 
     std::vector<Constraint*> solved;
     for (Constraint& constraint : constraints_) {

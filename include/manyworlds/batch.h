@@ -56,6 +56,12 @@ struct StepSettings {
   bool warm_start = true;
   Float3 gravity{0.0f, -9.81f, 0.0f};
   UnhealthyWorlds unhealthy_worlds = UnhealthyWorlds::kKeep;
+  // Opt-in remedy (off: Jolt's integration, bit for bit): Euler's gyroscopic
+  // term -w x (I w) for dynamic bodies, by an energy-keeping implicit midpoint
+  // step before the forces of every substep (kernels/integration-inl.h,
+  // reference/gyroscopic.h). Jolt leaves it out, so a body spun about its
+  // intermediate axis never flips (docs/stability.md).
+  bool gyroscopic = false;
 };
 
 struct BatchOptions {

@@ -38,6 +38,25 @@ std::vector<std::string> ReferenceSceneIds();
 // naming the unknown id and listing the valid ones.
 Scene MakeReferenceScene(std::string_view id);
 
+// The stress scenes of the spec (numerical stability, docs/scenes.md and
+// docs/stability.md): chain16-r1000, chain64, spring-0.1, spring-0.25,
+// spring-0.5, spring-1.0, spin-unstable, flywheel, singular-hinge-90,
+// singular-hinge-180, singular-fixed-90, singular-fixed-180,
+// singular-slider-90, singular-rackpinion, singular-cone,
+// singular-swingtwist, dt-1e-4, dt-1/15, mass-range, mass-range-hanging,
+// far-1e4. None has an action. Each is meant to be stepped with SceneStepSettings(id).
+std::vector<std::string> StressSceneIds();
+
+// The stress scene `id` (one of StressSceneIds(); chain16-r1000 and chain64
+// are the reference scenes). Throws std::invalid_argument naming the unknown
+// id and listing the valid ones.
+Scene MakeStressScene(std::string_view id);
+
+// The step settings a reference or stress scene is run with: StepSettings{}
+// (the spec's defaults) for every scene except dt-1e-4 (delta_time 1e-4 s)
+// and dt-1/15 (1/15 s). Throws std::invalid_argument for an unknown id.
+StepSettings SceneStepSettings(std::string_view id);
+
 // A force (N, world space, through the centre of mass) on one body of one
 // world, acting during the next step.
 struct BodyForce {
@@ -132,5 +151,25 @@ inline constexpr std::size_t kGear1Hinge = 0, kGear2Hinge = 1, kGear = 2;
 inline constexpr std::size_t kPelvis = 0;
 inline constexpr std::size_t kLeftElbow = 3, kLeftKnee = 5, kRightElbow = 7, kRightKnee = 9;
 }  // namespace reference_scene
+
+// Body and constraint indices of the stress scenes.
+namespace stress_scene {
+// spring-*, spin-unstable, flywheel, singular-*: the one moving body (for
+// singular-rackpinion the pinion; the rack is body 2), held by constraint 0
+// (for singular-rackpinion: pinion hinge 0, rack slider 1, coupling 2).
+inline constexpr std::size_t kBody = 1;
+inline constexpr std::size_t kRack = 2;
+// spring-*: the sphere starts this far along X from the anchor at the origin
+// (m), at rest; damping ratio 0.
+inline constexpr float kSpringStart = 1.0f;
+// spin-unstable: |w| (rad/s) and the tilt of w from the middle axis Y
+// towards X (rad) that seeds the flip.
+inline constexpr float kSpinRate = 40.0f, kSpinTilt = 0.01f;
+// far-1e4: every body and anchor of chain16 shifted by this much on each axis (m).
+inline constexpr float kFarOffset = 1.0e4f;
+// mass-range: link i (from the anchor) has mass 10^(6 - i) kg;
+// mass-range-hanging: 10^(i - 3) kg; i = 0..kMassRangeLinks-1.
+inline constexpr std::size_t kMassRangeLinks = 10;
+}  // namespace stress_scene
 
 }  // namespace manyworlds

@@ -335,6 +335,7 @@ StepSettings Settings(FuzzedDataProvider& in) {
   s.warm_start = in.ConsumeBool();
   if (in.ConsumeBool()) s.gravity = Vec(in, -20, 20);
   s.unhealthy_worlds = in.ConsumeBool() ? UnhealthyWorlds::kKeep : UnhealthyWorlds::kReset;
+  s.gyroscopic = in.ConsumeBool();
   return s;
 }
 
