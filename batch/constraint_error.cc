@@ -9,6 +9,7 @@
 
 #include "batch/constraint_lanes.h"
 #include "kernels/body_lanes.h"
+#include "kernels/hermite_path.h"
 
 namespace manyworlds {
 namespace {
@@ -55,6 +56,30 @@ double AnchorError(const Pose& b1, const Pose& b2, const LaneReader& read,
 
 double RestRotationError(const Pose& b1, const Pose& b2, const Rotation& inv_initial) {
   return RotationAngle(b2.q * inv_initial * b1.q.conjugate());
+}
+
+// The closest point of a path to a point (path space), by the batch's own
+// path kernels (in float, as the step computes it), with its frame.
+struct PathPointOnPath {
+  double fraction;
+  Vector position, tangent;
+  Rotation frame;  // X = tangent, Y = binormal, Z = normal
+};
+PathPointOnPath ClosestPathPoint(const HermitePath& path, const Vector& q) {
+  const HermitePathKernels& kernels = DispatchedKernels<HermitePathKernels>();
+  Vec3Lanes query, position, tangent, normal, binormal;
+  for (std::size_t lane = 0; lane < kLaneWidth; ++lane) {
+    query.x[lane] = float(q.x());
+    query.y[lane] = float(q.y());
+    query.z[lane] = float(q.z());
+  }
+  LaneArray fraction;
+  kernels.closest_point(path, query, fraction);
+  kernels.point_on_path(path, fraction, position, tangent, normal, binormal);
+  const auto lane0 = [](const Vec3Lanes& v) { return Vector(v.x[0], v.y[0], v.z[0]); };
+  Eigen::Matrix3d frame;
+  frame << lane0(tangent), lane0(binormal), lane0(normal);
+  return {fraction[0], lane0(position), lane0(tangent), Rotation(frame).normalized()};
 }
 
 double LimitViolation(double value, double min, double max) {
@@ -240,6 +265,45 @@ double ConstraintErrorOfLane(const StepPlan& plan, const std::byte* block, std::
         if (c.six_dof.translation[i] == AxisLimitKind::kFree) continue;
         const double d = u.dot(frame1 * Vector::Unit(i));
         error = std::max(error, LimitViolation(d, read(limits[i].min), read(limits[i].max)));
+      }
+      return error;
+    }
+    case ConstraintType::kPath: {
+      const auto& s = read.at<PathConstraintLanes>(c.offset);
+      const Rotation path_to_world = b1.q * read(s.path_to_body1_rotation);
+      const Vector origin = b1.x + b1.q * read(s.path_to_body1_position);
+      const Vector attachment = b2.x + b2.q * read(s.attachment_to_body2_position);
+      const PathPointOnPath on_path = ClosestPathPoint(
+          c.Path(), Vector(path_to_world.conjugate() * (attachment - origin)));
+      // Off the curve: the separation across the tangent, and along it
+      // beyond an end of an open path.
+      const Vector u = attachment - (origin + path_to_world * on_path.position);
+      const Vector t = path_to_world * on_path.tangent;
+      const bool at_end = !c.path_looping && (on_path.fraction <= 0.0 ||
+                                              on_path.fraction >= c.Path().max_fraction());
+      double error = (u - u.dot(t) * t).norm();
+      if (at_end) error = std::max(error, std::abs(u.dot(t)));
+      const Rotation frame2 = b2.q * read(s.attachment_to_body2_rotation);
+      const Rotation path_frame = path_to_world * on_path.frame;
+      switch (c.path_rotation) {
+        case PathRotation::kFree: break;
+        case PathRotation::kConstrainAroundTangent:
+        case PathRotation::kConstrainAroundNormal:
+        case PathRotation::kConstrainAroundBinormal: {
+          // The kept axis (X tangent, Z normal, Y binormal) of both frames.
+          const int axis = c.path_rotation == PathRotation::kConstrainAroundTangent ? 0
+                           : c.path_rotation == PathRotation::kConstrainAroundNormal ? 2
+                                                                                      : 1;
+          const Vector a = path_frame * Vector::Unit(axis), b = frame2 * Vector::Unit(axis);
+          error = std::max(error, std::atan2(a.cross(b).norm(), a.dot(b)));
+          break;
+        }
+        case PathRotation::kConstrainToPath:
+          error = std::max(error, RotationAngle(path_frame.conjugate() * frame2));
+          break;
+        case PathRotation::kFullyConstrained:
+          error = std::max(error, RestRotationError(b1, b2, read(s.inv_initial_orientation)));
+          break;
       }
       return error;
     }

@@ -12,6 +12,7 @@
 #include "kernels/axis.h"
 #include "kernels/dual_axis.h"
 #include "kernels/gear.h"
+#include "kernels/hermite_path.h"
 #include "kernels/hinge_rotation.h"
 #include "kernels/independent_axis.h"
 #include "kernels/point.h"
@@ -163,6 +164,29 @@ struct SwingTwistConstraintLanes {
   SwingTwistLimitLanes limits;     // per world (parameters)
   SwingTwistLanes swing_twist;
   PointLanes point;
+};
+
+// ---- Path: [motor axis] -> dual axis (normal, binormal) -> [end limit
+// axis] -> hinge rotation or rotation Euler (by the rotation mode). The
+// path's points are scene data in the plan; the motor is a LinearMotorLanes
+// at the motor offset (target_position = target path fraction).
+struct PathConstraintLanes {
+  // Path space in body 1's and the attachment frame (X = tangent, Y =
+  // binormal, Z = normal at the starting fraction) in body 2's COM space.
+  QuatLanes path_to_body1_rotation, attachment_to_body2_rotation;
+  Vec3Lanes path_to_body1_position, attachment_to_body2_position;
+  // r0^-1: fixed for kFullyConstrained, this step's for kConstrainToPath.
+  QuatLanes inv_initial_orientation;
+  LaneArray fraction;  // the closest fraction of this step
+  Vec3Lanes separation;  // u = attachment - path point, this step
+  Vec3Lanes tangent;     // world path tangent, this step
+  DualAxisGeometry dual_geometry;
+  DualAxisLanes dual;
+  AxisGeometry limit_geometry;  // end limit on the tangent (open paths)
+  AxisLanes limit;
+  HingeRotationGeometry hinge_geometry;
+  HingeRotationLanes hinge;
+  RotationEulerLanes rotation;
 };
 
 // ---- Six-DOF: [translation drives] -> [rotation drives] -> rotation Euler

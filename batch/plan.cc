@@ -31,6 +31,7 @@ const char* SettingsTypeName(const ConstraintSettings& settings) {
         if constexpr (std::is_same_v<S, ConeConstraintSettings>) return "cone";
         if constexpr (std::is_same_v<S, SwingTwistConstraintSettings>) return "swing_twist";
         if constexpr (std::is_same_v<S, SixDofConstraintSettings>) return "six_dof";
+        if constexpr (std::is_same_v<S, PathConstraintSettings>) return "path";
       },
       settings);
 }
@@ -195,6 +196,61 @@ class BlockLayout {
   std::size_t bytes_ = 0;
 };
 
+// "name[i]", built by appending (GCC 12 warns falsely on "[" + string).
+std::string IndexedField(const char* name, std::size_t i) {
+  std::string field(name);
+  field += '[';
+  field += std::to_string(i);
+  field += ']';
+  return field;
+}
+
+// Checks a path constraint and lays it out (spec 3, Path).
+void PlanPath(const std::string& what, const PathConstraintSettings& s, ConstraintPlan& c,
+              BlockLayout& layout) {
+  CheckFinite(what, "path_position", s.path_position);
+  CheckOrientation(what, "path_rotation", s.path_rotation);
+  if (s.path.size() < 2) {
+    Refuse(what, "path", "needs at least 2 points (got " + std::to_string(s.path.size()) + ")");
+  }
+  for (std::size_t i = 0; i < s.path.size(); ++i) {
+    const PathPoint& p = s.path[i];
+    const std::string point = IndexedField("path", i);
+    CheckFinite(what, point + ".position", p.position);
+    // A zero tangent or a normal along it leaves the path frame undefined there.
+    CheckAxis(what, point + ".tangent", p.tangent);
+    CheckAxis(what, point + ".normal", p.normal);
+    const double cx = double(p.normal[1]) * p.tangent[2] - double(p.normal[2]) * p.tangent[1];
+    const double cy = double(p.normal[2]) * p.tangent[0] - double(p.normal[0]) * p.tangent[2];
+    const double cz = double(p.normal[0]) * p.tangent[1] - double(p.normal[1]) * p.tangent[0];
+    if (cx * cx + cy * cy + cz * cz < 1e-12) {
+      Refuse(what, point + ".normal", "is parallel to the tangent");
+    }
+  }
+  if (s.looping && s.path.front().position == s.path.back().position) {
+    Refuse(what, "path", "of a looping path repeats its first point at the end (the loop closes by itself)");
+  }
+  CheckFinite(what, "path_fraction", s.path_fraction);
+  if (std::size_t(s.rotation) > std::size_t(PathRotation::kFullyConstrained)) {
+    Refuse(what, "rotation", "is not a PathRotation");
+  }
+  CheckMotor(what, s.motor_state, s.motor, s.max_friction_force, "max_friction_force");
+  CheckFinite(what, "target_velocity", s.target_velocity);
+  CheckFinite(what, "target_path_fraction", s.target_path_fraction);
+  c.type = ConstraintType::kPath;
+  c.offset = layout.Add<PathConstraintLanes>();
+  c.drive = DriveOf(s.motor_state, s.max_friction_force);
+  c.motor_spring_mode = s.motor.spring.mode;
+  if (c.drive != DriveKind::kNone) c.motor_offset = layout.Add<LinearMotorLanes>();
+  for (const PathPoint& p : s.path) {
+    c.path_points.push_back({{p.position[0], p.position[1], p.position[2]},
+                             {p.tangent[0], p.tangent[1], p.tangent[2]},
+                             {p.normal[0], p.normal[1], p.normal[2]}});
+  }
+  c.path_looping = s.looping;
+  c.path_rotation = s.rotation;
+}
+
 // Checks a six-DOF constraint and decides its parts (spec 3, SixDOF).
 void PlanSixDof(const std::string& what, const SixDofConstraintSettings& s,
                        ConstraintPlan& c, BlockLayout& layout) {
@@ -206,14 +262,7 @@ void PlanSixDof(const std::string& what, const SixDofConstraintSettings& s,
   CheckAxis(what, "axis_y2", s.axis_y2);
   CheckPerpendicular(what, "axis_x1", s.axis_x1, "axis_y1", s.axis_y1);
   CheckPerpendicular(what, "axis_x2", s.axis_x2, "axis_y2", s.axis_y2);
-  // "name[i]", built by appending (GCC 12 warns falsely on "[" + string).
-  const auto indexed = [](const char* name, std::size_t i) {
-    std::string field(name);
-    field += '[';
-    field += std::to_string(i);
-    field += ']';
-    return field;
-  };
+  const auto indexed = IndexedField;
   for (std::size_t i = 0; i < kSixDofAxes; ++i) {
     if (std::isnan(s.limit_min[i])) Refuse(what, indexed("limit_min", i), "is NaN");
     if (std::isnan(s.limit_max[i])) Refuse(what, indexed("limit_max", i), "is NaN");
@@ -303,6 +352,7 @@ const char* ConstraintTypeName(ConstraintType type) {
     case ConstraintType::kCone: return "cone";
     case ConstraintType::kSwingTwist: return "swing_twist";
     case ConstraintType::kSixDof: return "six_dof";
+    case ConstraintType::kPath: return "path";
   }
   return "unknown";
 }
@@ -361,6 +411,18 @@ std::string ConstraintPlan::PartsInOrder() const {
     case ConstraintType::kCone: return "point angle(cone limit)";
     case ConstraintType::kSwingTwist:
       return RotationDrivesInOrder() + "swing_twist(" + SwingTypeText() + ") point";
+    case ConstraintType::kPath: {
+      static const char* const kRotationPart[] = {
+          "",
+          " hinge_rotation(about the tangent)",
+          " hinge_rotation(about the normal)",
+          " hinge_rotation(about the binormal)",
+          " rotation_euler(to the path)",
+          " rotation_euler(fixed)"};
+      return (has_motor() ? "axis(" + drive_row + ") " : std::string()) +
+             "dual_axis(normal, binormal)" + (path_looping ? "" : " axis(end limits)") +
+             kRotationPart[std::size_t(path_rotation)];
+    }
     case ConstraintType::kSixDof: {
       std::string parts;
       for (int i = 0; i < 3; ++i) {
@@ -647,6 +709,8 @@ StepPlan CompilePlan(const Scene& scene) {
             }
           } else if constexpr (std::is_same_v<S, SixDofConstraintSettings>) {
             PlanSixDof(what, s, c, layout);
+          } else if constexpr (std::is_same_v<S, PathConstraintSettings>) {
+            PlanPath(what, s, c, layout);
           } else if constexpr (std::is_same_v<S, ConeConstraintSettings>) {
             CheckFinite(what, "point1", s.point1);
             CheckFinite(what, "point2", s.point2);

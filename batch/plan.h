@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "kernels/hermite_path.h"  // HermitePathPoint
 #include "kernels/swing_twist.h"  // SwingTwistConfig
 #include "manyworlds/batch.h"
 #include "manyworlds/motion_type.h"
@@ -36,6 +37,7 @@ enum class ConstraintType : std::uint8_t {
   kCone,
   kSwingTwist,
   kSixDof,
+  kPath,
 };
 const char* ConstraintTypeName(ConstraintType type);
 
@@ -98,6 +100,12 @@ struct ConstraintPlan {
   // onto its position-driven axes; swing-twist keeps all three).
   unsigned rotation_position_axes = 0b111;
   SixDofConfig six_dof{};
+  // Path: the spline's points (path space), whether it loops, and how body
+  // 2's rotation is held.
+  std::vector<HermitePathPoint> path_points;
+  bool path_looping = false;
+  PathRotation path_rotation = PathRotation::kFree;
+  HermitePath Path() const { return {path_points.data(), path_points.size(), path_looping}; }
 
   bool has_limits() const { return limit_offset != kAbsent; }
   bool has_motor() const { return motor_offset != kAbsent; }

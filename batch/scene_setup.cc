@@ -14,6 +14,7 @@
 
 #include "batch/constraint_block.h"
 #include "batch/constraint_lanes.h"
+#include "kernels/hermite_path.h"
 
 namespace manyworlds {
 namespace {
@@ -107,6 +108,10 @@ class Frames {
     if (total == 0.0) return body1_.position;
     return (body1_.inv_mass * body1_.position + body2_.inv_mass * body2_.position) / total;
   }
+  const Pose& body1() const { return body1_; }
+  const Pose& body2() const { return body2_; }
+  bool world_space() const { return world_; }
+
   Vector AutoPoint1() const { return body1_.rotation.conjugate() * (AutoDetectedPoint() - body1_.position); }
   Vector AutoPoint2() const { return body2_.rotation.conjugate() * (AutoDetectedPoint() - body2_.position); }
 
@@ -271,6 +276,46 @@ void WriteSixDof(const ConstraintPlan& c, const SixDofConstraintSettings& s, con
                       s.target_angular_velocity, s.target_orientation);
 }
 
+// The path constraint: path space in body 1's COM space, and the attachment
+// frame (X = tangent, Y = binormal, Z = normal at the starting fraction,
+// evaluated by the batch's own path kernels, in float as Jolt) in body 2's.
+void WritePath(const ConstraintPlan& c, const PathConstraintSettings& s, const Frames& frames,
+               std::byte* block) {
+  auto& lanes = At<PathConstraintLanes>(block, c.offset);
+  const Pose& b1 = frames.body1();
+  const Pose& b2 = frames.body2();
+  Rotation path_rotation = ToRotation(s.path_rotation).normalized();
+  Vector path_position = ToVector(s.path_position);
+  if (frames.world_space()) {
+    path_rotation = (b1.rotation.conjugate() * path_rotation).normalized();
+    path_position = b1.rotation.conjugate() * (path_position - b1.position);
+  }
+  Fill(lanes.path_to_body1_rotation, path_rotation);
+  Fill(lanes.path_to_body1_position, path_position);
+
+  LaneArray fraction;
+  for (float& f : fraction.lanes) f = s.path_fraction;
+  Vec3Lanes point, tangent, normal, binormal;
+  DispatchedKernels<HermitePathKernels>().point_on_path(c.Path(), fraction, point, tangent,
+                                                          normal, binormal);
+  const auto lane0 = [](const Vec3Lanes& v) { return Vector(v.x[0], v.y[0], v.z[0]); };
+  Eigen::Matrix3d attachment;
+  attachment << lane0(tangent), lane0(binormal), lane0(normal);
+  const Rotation attachment_world =
+      (b1.rotation * path_rotation * Rotation(attachment)).normalized();
+  const Vector attachment_position =
+      b1.position + b1.rotation * (path_position + path_rotation * lane0(point));
+  Fill(lanes.attachment_to_body2_rotation, (b2.rotation.conjugate() * attachment_world).normalized());
+  Fill(lanes.attachment_to_body2_position,
+       Vector(b2.rotation.conjugate() * (attachment_position - b2.position)));
+  // Jolt's sGetInvInitialOrientation: q2* q1 at creation (fully constrained).
+  Fill(lanes.inv_initial_orientation, (b2.rotation.conjugate() * b1.rotation).normalized());
+  if (c.has_motor()) {
+    WriteMotor(At<LinearMotorLanes>(block, c.motor_offset), s.motor, s.target_velocity,
+               s.target_path_fraction, s.max_friction_force);
+  }
+}
+
 // Jolt's Vec3::GetNormalizedPerpendicular: (z, 0, -x) / |.| if |x| > |y|,
 // else (0, z, -y) / |.|.
 Vector NormalizedPerpendicular(const Vector& v) {
@@ -391,6 +436,8 @@ void WriteConstraint(const ConstraintPlan& c, const ConstraintSettings& settings
                               s.target_angular_velocity, s.target_orientation);
         } else if constexpr (std::is_same_v<S, SixDofConstraintSettings>) {
           WriteSixDof(c, s, frames, block);
+        } else if constexpr (std::is_same_v<S, PathConstraintSettings>) {
+          WritePath(c, s, frames, block);
         } else if constexpr (std::is_same_v<S, ConeConstraintSettings>) {
           auto& lanes = At<ConeConstraintLanes>(block, c.offset);
           Fill(lanes.anchors.r1_local, frames.Point1(s.point1));

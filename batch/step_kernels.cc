@@ -30,6 +30,7 @@
 #include "batch/point_constraint-inl.h"
 #include "batch/pulley_constraint-inl.h"
 #include "batch/slider_constraint-inl.h"
+#include "batch/path_constraint-inl.h"
 #include "batch/six_dof_constraint-inl.h"
 #include "batch/swing_twist_constraint-inl.h"
 #include "hwy/highway.h"
@@ -52,6 +53,7 @@ inline void SetupConstraint(const ConstraintBlock& c, const StepScalars& step) {
     case ConstraintType::kCone: return ConeConstraintSetup(c, step);
     case ConstraintType::kSwingTwist: return SwingTwistConstraintSetup(c, step);
     case ConstraintType::kSixDof: return SixDofConstraintSetup(c, step);
+    case ConstraintType::kPath: return PathConstraintSetup(c, step);
   }
 }
 
@@ -68,6 +70,7 @@ inline void WarmStartConstraint(const ConstraintBlock& c, const StepScalars& ste
     case ConstraintType::kCone: return ConeConstraintWarmStart(c, step);
     case ConstraintType::kSwingTwist: return SwingTwistConstraintWarmStart(c, step);
     case ConstraintType::kSixDof: return SixDofConstraintWarmStart(c, step);
+    case ConstraintType::kPath: return PathConstraintWarmStart(c, step);
   }
 }
 
@@ -84,6 +87,7 @@ inline bool SolveConstraintVelocity(const ConstraintBlock& c) {
     case ConstraintType::kCone: return ConeConstraintSolveVelocity(c);
     case ConstraintType::kSwingTwist: return SwingTwistConstraintSolveVelocity(c);
     case ConstraintType::kSixDof: return SixDofConstraintSolveVelocity(c);
+    case ConstraintType::kPath: return PathConstraintSolveVelocity(c);
   }
   return false;
 }
@@ -103,6 +107,7 @@ inline bool SolveConstraintPosition(const StepPlan& plan, const ConstraintBlock&
     case ConstraintType::kCone: return ConeConstraintSolvePosition(c, step);
     case ConstraintType::kSwingTwist: return SwingTwistConstraintSolvePosition(c, step);
     case ConstraintType::kSixDof: return SixDofConstraintSolvePosition(c, step);
+    case ConstraintType::kPath: return PathConstraintSolvePosition(c, step);
   }
   return false;
 }

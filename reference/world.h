@@ -58,6 +58,7 @@
 #include "reference/pulley_constraint.h"
 #include "reference/rack_and_pinion_constraint.h"
 #include "reference/slider_constraint.h"
+#include "reference/path_constraint.h"
 #include "reference/six_dof_constraint.h"
 #include "reference/swing_twist_constraint.h"
 #include "reference/world_setup.h"
@@ -72,7 +73,7 @@ class World {
       std::variant<PointConstraint<T>, FixedConstraint<T>, HingeConstraint<T>,
                    SliderConstraint<T>, GearConstraint<T>, RackAndPinionConstraint<T>,
                    DistanceConstraint<T>, PulleyConstraint<T>, ConeConstraint<T>,
-                   SwingTwistConstraint<T>, SixDofConstraint<T>>;
+                   SwingTwistConstraint<T>, SixDofConstraint<T>, PathConstraint<T>>;
 
   // Converts every body and constraint (world-space settings refer to the poses
   // in the scene). Throws std::invalid_argument for body or helper indices that do
@@ -115,24 +116,29 @@ class World {
   void SetForce(std::size_t body, const Vec3<T>& force) { motion_.at(body).force = force; }
   void SetTorque(std::size_t body, const Vec3<T>& torque) { motion_.at(body).torque = torque; }
 
-  // Hinge: rad/s; slider: m/s.
+  // Hinge: rad/s; slider and path: m/s.
   void SetTargetVelocity(std::size_t constraint, T velocity) {
     if (auto* hinge = std::get_if<HingeConstraint<T>>(&constraints_.at(constraint))) {
       hinge->SetTargetAngularVelocity(velocity);
     } else if (auto* slider = std::get_if<SliderConstraint<T>>(&constraints_.at(constraint))) {
       slider->SetTargetVelocity(velocity);
+    } else if (auto* path = std::get_if<PathConstraint<T>>(&constraints_.at(constraint))) {
+      path->SetTargetVelocity(velocity);
     } else {
-      throw std::invalid_argument(NotA("hinge or slider", constraint));
+      throw std::invalid_argument(NotA("hinge, slider or path", constraint));
     }
   }
-  // Hinge: rad; slider: m. Clamped into the limits (spec 3).
+  // Hinge: rad; slider: m (both clamped into the limits, spec 3); path: the
+  // target path fraction.
   void SetTargetPosition(std::size_t constraint, T position) {
     if (auto* hinge = std::get_if<HingeConstraint<T>>(&constraints_.at(constraint))) {
       hinge->SetTargetAngle(position);
     } else if (auto* slider = std::get_if<SliderConstraint<T>>(&constraints_.at(constraint))) {
       slider->SetTargetPosition(position);
+    } else if (auto* path = std::get_if<PathConstraint<T>>(&constraints_.at(constraint))) {
+      path->SetTargetFraction(position);
     } else {
-      throw std::invalid_argument(NotA("hinge or slider", constraint));
+      throw std::invalid_argument(NotA("hinge, slider or path", constraint));
     }
   }
 
@@ -218,6 +224,8 @@ class World {
       return SwingTwistConstraint<T>(settings, body1, body2);
     } else if constexpr (std::is_same_v<Settings, SixDofConstraintSettings>) {
       return SixDofConstraint<T>(settings, body1, body2);
+    } else if constexpr (std::is_same_v<Settings, PathConstraintSettings>) {
+      return PathConstraint<T>(settings, body1, body2);
     } else {
       // Gear and rack-and-pinion read both bodies' motion properties (spec 1.5).
       if (body1.IsStatic() || body2.IsStatic()) {

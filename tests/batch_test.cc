@@ -267,6 +267,37 @@ INSTANTIATE_TEST_SUITE_P(
                        s.AddConstraint(joint);
                      },
                      {"'hip'", "target_orientation"}},
+        BadSceneCase{"PathWithOnePoint",
+                     [](Scene& s) {
+                       PathConstraintSettings path;
+                       path.name = "rail";
+                       path.body1 = 0;
+                       path.body2 = 1;
+                       path.path = {PathPoint{}};
+                       s.AddConstraint(path);
+                     },
+                     {"'rail'", "path", "at least 2"}},
+        BadSceneCase{"PathNormalAlongTangent",
+                     [](Scene& s) {
+                       PathConstraintSettings path;
+                       path.name = "rail";
+                       path.body1 = 0;
+                       path.body2 = 1;
+                       path.path = {PathPoint{}, PathPoint{{1, 0, 0}, {1, 0, 0}, {2, 0, 0}}};
+                       s.AddConstraint(path);
+                     },
+                     {"'rail'", "path[1].normal"}},
+        BadSceneCase{"LoopingPathRepeatsItsStart",
+                     [](Scene& s) {
+                       PathConstraintSettings path;
+                       path.name = "rail";
+                       path.body1 = 0;
+                       path.body2 = 1;
+                       path.looping = true;
+                       path.path = {PathPoint{}, PathPoint{{1, 0, 0}}, PathPoint{}};
+                       s.AddConstraint(path);
+                     },
+                     {"'rail'", "looping"}},
         BadSceneCase{"SixDofNanLimit",
                      [](Scene& s) {
                        SixDofConstraintSettings joint;

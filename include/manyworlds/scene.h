@@ -297,6 +297,54 @@ struct SixDofConstraintSettings {
   }
 };
 
+// One control point of a path (a cubic Hermite spline through the points, in
+// path space): its position, the tangent (the derivative of position by
+// fraction, so its length shapes the curve) and the normal, which is
+// interpolated linearly between points and made perpendicular to the tangent.
+struct PathPoint {
+  Float3 position{0, 0, 0};
+  Float3 tangent{1, 0, 0};
+  Float3 normal{0, 1, 0};
+};
+
+// How a path constraint holds body 2's rotation (Jolt's
+// EPathRotationConstraintType). Body 2's frame is the path frame at its
+// starting fraction: X = tangent, Y = binormal, Z = normal.
+enum class PathRotation : std::uint8_t {
+  kFree,
+  kConstrainAroundTangent,   // turns only about the path tangent (a hinge on it)
+  kConstrainAroundNormal,    // only about the path normal
+  kConstrainAroundBinormal,  // only about the path binormal
+  kConstrainToPath,          // its frame follows the path frame
+  kFullyConstrained,         // keeps its rotation relative to body 1
+};
+
+// Body 2 slides along a path fixed to body 1 (spec 3, Path): its attachment
+// point stays on the curve (two rows across it), stops at the ends of a
+// path that does not loop, and its rotation is held as `rotation` says. The
+// path is the same in every world. A motor drives the path fraction (the
+// segment index plus the spline parameter): velocity in m/s along the
+// tangent, position as a fraction (wrapped for looping paths); with the
+// motor off, max_friction_force resists sliding.
+struct PathConstraintSettings {
+  std::string name;
+  std::size_t body1 = 0, body2 = 0;
+  // Where path space sits: in world space at the scene's initial poses, or
+  // relative to body 1's centre of mass in body space.
+  ConstraintSpace space = ConstraintSpace::kWorldSpace;
+  Float3 path_position{0, 0, 0};
+  Quaternion path_rotation{0, 0, 0, 1};
+  std::vector<PathPoint> path;  // at least 2 points
+  bool looping = false;         // the last point joins the first
+  float path_fraction = 0.0f;   // where body 2 is attached at the start
+  PathRotation rotation = PathRotation::kFree;
+  float max_friction_force = 0.0f;  // N, when the motor is off
+  MotorSettings motor;
+  MotorState motor_state = MotorState::kOff;
+  float target_velocity = 0.0f;       // m/s along the path tangent
+  float target_path_fraction = 0.0f;  // for position motors
+};
+
 // No constraint index: the gear / rack has no position correction.
 inline constexpr std::size_t kNoConstraint = static_cast<std::size_t>(-1);
 
@@ -331,7 +379,8 @@ using ConstraintSettings =
                  SliderConstraintSettings, GearConstraintSettings,
                  RackAndPinionConstraintSettings, DistanceConstraintSettings,
                  PulleyConstraintSettings, ConeConstraintSettings,
-                 SwingTwistConstraintSettings, SixDofConstraintSettings>;
+                 SwingTwistConstraintSettings, SixDofConstraintSettings,
+                 PathConstraintSettings>;
 
 // The world every batch copies. Constraints are solved in the order they were
 // added (Jolt's order for equal priorities).

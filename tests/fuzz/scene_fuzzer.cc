@@ -155,7 +155,7 @@ void Common(FuzzedDataProvider& in, std::size_t bodies, Settings& c) {
 
 ConstraintSettings Constraint(FuzzedDataProvider& in, std::size_t bodies,
                               std::size_t constraints) {
-  switch (in.ConsumeIntegralInRange<int>(0, 10)) {
+  switch (in.ConsumeIntegralInRange<int>(0, 11)) {
     case 0: {
       PointConstraintSettings c;
       Common(in, bodies, c);
@@ -289,6 +289,37 @@ ConstraintSettings Constraint(FuzzedDataProvider& in, std::size_t bodies,
         c.target_angular_velocity = Vec(in, -10, 10);
         c.target_orientation = Quat(in);
       }
+      return c;
+    }
+    case 11: {
+      PathConstraintSettings c;
+      c.body1 = Index(in, bodies);
+      c.body2 = Index(in, bodies);
+      c.space = in.ConsumeBool() ? ConstraintSpace::kWorldSpace : ConstraintSpace::kLocalToBodyCOM;
+      c.path_position = Vec(in, -5, 5);
+      c.path_rotation = Quat(in);
+      // 0 to 5 points (fewer than 2 is refused), tangents and normals that
+      // may vanish or line up (refused), a loop that may repeat its start.
+      const int points = in.ConsumeIntegralInRange<int>(0, 5);
+      for (int i = 0; i < points; ++i) {
+        PathPoint p;
+        p.position = Vec(in, -3, 3);
+        const Frame f = AxisPair(in);
+        p.tangent = in.ConsumeBool() ? f.axis : Vec(in, -3, 3);
+        p.normal = in.ConsumeBool() ? f.normal : Vec(in, -1, 1);
+        c.path.push_back(p);
+      }
+      c.looping = in.ConsumeBool();
+      if (c.looping && !c.path.empty() && in.ConsumeIntegral<std::uint8_t>() > 240) {
+        c.path.push_back(c.path.front());
+      }
+      c.path_fraction = Float(in, -1, 6);
+      c.rotation = static_cast<PathRotation>(in.ConsumeIntegralInRange<int>(0, 5));
+      c.max_friction_force = Float(in, -1, 10);
+      c.motor = Motor(in);
+      c.motor_state = static_cast<MotorState>(in.ConsumeIntegralInRange<int>(0, 3));
+      c.target_velocity = Float(in, -5, 5);
+      c.target_path_fraction = Float(in, -2, 6);
       return c;
     }
     case 10: {
