@@ -113,6 +113,12 @@ std::map<int, double>& MeasuredPeak(bool after = false) {
   static std::map<int, double> peak[2];
   return peak[after];
 }
+// Flops per benchmark iteration of peak/fma/threads:<T> (constant), to turn
+// the reporter's CPU time per iteration into a CPU-time peak.
+std::map<int, double>& PeakFlopsPerIteration() {
+  static std::map<int, double> flops;
+  return flops;
+}
 // flop/s of MeasuredPeak(after)[threads], NaN if not measured.
 double PeakFlops(int threads, bool after) {
   const auto found = MeasuredPeak(after).find(threads);
@@ -139,6 +145,7 @@ void RunPeak(benchmark::State& state, int threads, bool after) {
   state.counters["GFLOPs"] = flops / elapsed.count() * 1e-9;
   state.counters["threads"] = threads;
   MeasuredPeak(after)[threads] = flops / elapsed.count();
+  PeakFlopsPerIteration()[threads] = flops / double(state.iterations());
 }
 
 // RunBatch, then the roofline counters of the run.
@@ -236,9 +243,18 @@ void PrintRoofline(const RecordingReporter& r) {
       FmaPeakTarget(), Figure(flop_per_s[0] * 1e-9, "%.1f").c_str(),
       Figure(after[0] * 1e-9, "%.1f").c_str(), Figure(flop_per_s[1] * 1e-9, "%.1f").c_str(),
       Figure(after[1] * 1e-9, "%.1f").c_str(), kTableWorlds);
-  std::printf("%-14s %10s %10s %9s %12s %9s %9s %12s %9s %9s %12s\n", "scene", "flop/step",
-              "flop/vel2-10", "flop/vit", "step GF/s 1T", "of peak", "2T", "vel GF/s 1T",
-              "of peak", "2T", "vel SIMD");
+  // 1 thread also per CPU second of the benchmark thread, for the peak and
+  // the scenes alike: on a shared machine it leaves out the time the thread
+  // waited for a core.
+  const double cpu_peak1 =
+      PeakFlopsPerIteration().count(1)
+          ? PeakFlopsPerIteration()[1] * r.WorldStepsPerCpuSecond(PeakName(1, false), 1)
+          : NAN;
+  std::printf("FMA peak, 1 thread, per CPU second: %s GFLOP/s\n",
+              Figure(cpu_peak1 * 1e-9, "%.1f").c_str());
+  std::printf("%-14s %10s %12s %9s %12s %9s %9s %9s %12s %9s %9s %9s %9s %9s\n", "scene",
+              "flop/step", "flop/vel2-10", "flop/vit", "step GF/s 1T", "of peak", "(CPU)", "2T",
+              "vel GF/s 1T", "of peak", "(CPU)", "2T", "vel SIMD", "(CPU)");
   for (const std::string& id : ReferenceSceneIds()) {
     const double batch1 = r.WorldStepsPerSecond(BatchName(id, kTableWorlds, 1), kTableWorlds);
     if (std::isnan(batch1)) continue;  // filtered out
@@ -254,25 +270,39 @@ void PrintRoofline(const RecordingReporter& r) {
     const double vel2 = velocity_time(BatchName(id, kTableWorlds, 2),
                                       FewIterationsName(id, 2, false));
     const double vel_scalar = velocity_time(ScalarName(id), FewIterationsName(id, 1, true));
+    const auto cpu_velocity_time = [&](const std::string& ten, const std::string& one) {
+      return 1.0 / r.WorldStepsPerCpuSecond(ten, kTableWorlds) -
+             1.0 / r.WorldStepsPerCpuSecond(one, kTableWorlds);
+    };
+    const double cpu_vel1 = cpu_velocity_time(BatchName(id, kTableWorlds, 1),
+                                              FewIterationsName(id, 1, false));
+    const double cpu_vel_scalar =
+        cpu_velocity_time(ScalarName(id), FewIterationsName(id, 1, true));
+    const double cpu_step1 =
+        r.WorldStepsPerCpuSecond(BatchName(id, kTableWorlds, 1), kTableWorlds);
     const double step_gflops1 = flops.per_step * batch1 * 1e-9;
     const double step_gflops2 = flops.per_step * batch2 * 1e-9;
     const double vel_flops = flops.VelocityIterationsBeyondFew();
     const double vel_gflops1 = vel_flops / vel1 * 1e-9;
     const double vel_gflops2 = vel_flops / vel2 * 1e-9;
-    std::printf("%-14s %10.0f %10.0f %9.0f %12s %9s %9s %12s %9s %9s %12s\n", id.c_str(),
-                flops.per_step, vel_flops, flops.per_velocity_iteration,
+    std::printf("%-14s %10.0f %12.0f %9.0f %12s %9s %9s %9s %12s %9s %9s %9s %9s %9s\n",
+                id.c_str(), flops.per_step, vel_flops, flops.per_velocity_iteration,
                 Figure(step_gflops1, "%.2f").c_str(),
                 Figure(step_gflops1 * 1e9 / flop_per_s[0], "%.3f").c_str(),
+                Figure(flops.per_step * cpu_step1 / cpu_peak1, "%.3f").c_str(),
                 Figure(step_gflops2 * 1e9 / flop_per_s[1], "%.3f").c_str(),
                 Figure(vel_gflops1, "%.2f").c_str(),
                 Figure(vel_gflops1 * 1e9 / flop_per_s[0], "%.3f").c_str(),
+                Figure(vel_flops / cpu_vel1 / cpu_peak1, "%.3f").c_str(),
                 Figure(vel_gflops2 * 1e9 / flop_per_s[1], "%.3f").c_str(),
-                Figure(vel_scalar / vel1, "%.1fx").c_str());
+                Figure(vel_scalar / vel1, "%.1fx").c_str(),
+                Figure(cpu_vel_scalar / cpu_vel1, "%.1fx").c_str());
   }
   std::printf("(flop/vel2-10: counted flops of velocity iterations 2-10 as they run, "
               "flop/vit: one full velocity iteration; of peak: counted GFLOP/s over the FMA peak "
               "of the same thread count; 2T: the same at 2 threads; vel: velocity iterations "
-              "2-10 alone, time of 10 iterations minus 1; vel SIMD: their time on "
+              "2-10 alone, time of 10 iterations minus 1; (CPU): the same per CPU second of the "
+              "benchmark thread, 1 thread; vel SIMD: their time on "
               "Highway's scalar target over the dispatched target's, ideal = lane count)\n");
   std::fflush(stdout);
 }
