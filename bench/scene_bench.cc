@@ -252,8 +252,8 @@ void PrintRoofline(const RecordingReporter& r) {
           : NAN;
   std::printf("FMA peak, 1 thread, per CPU second: %s GFLOP/s\n",
               Figure(cpu_peak1 * 1e-9, "%.1f").c_str());
-  std::printf("%-14s %10s %12s %9s %12s %9s %9s %9s %12s %9s %9s %9s %9s %9s\n", "scene",
-              "flop/step", "flop/vel2-10", "flop/vit", "step GF/s 1T", "of peak", "(CPU)", "2T",
+  std::printf("%-14s %10s %9s %9s %12s %9s %12s %9s %9s %9s %12s %9s %9s %9s %9s %9s\n",
+              "scene", "flop/step", "div+sqrt", "transc", "flop/vel2-10", "flop/vit", "step GF/s 1T", "of peak", "(CPU)", "2T",
               "vel GF/s 1T", "of peak", "(CPU)", "2T", "vel SIMD", "(CPU)");
   for (const std::string& id : ReferenceSceneIds()) {
     const double batch1 = r.WorldStepsPerSecond(BatchName(id, kTableWorlds, 1), kTableWorlds);
@@ -285,8 +285,10 @@ void PrintRoofline(const RecordingReporter& r) {
     const double vel_flops = flops.VelocityIterationsBeyondFew();
     const double vel_gflops1 = vel_flops / vel1 * 1e-9;
     const double vel_gflops2 = vel_flops / vel2 * 1e-9;
-    std::printf("%-14s %10.0f %12.0f %9.0f %12s %9s %9s %9s %12s %9s %9s %9s %9s %9s\n",
-                id.c_str(), flops.per_step, vel_flops, flops.per_velocity_iteration,
+    std::printf("%-14s %10.0f %9.0f %9.0f %12.0f %9.0f %12s %9s %9s %9s %12s %9s %9s %9s %9s "
+                "%9s\n",
+                id.c_str(), flops.per_step, flops.divisions_and_roots_per_step,
+                flops.transcendental_per_step, vel_flops, flops.per_velocity_iteration,
                 Figure(step_gflops1, "%.2f").c_str(),
                 Figure(step_gflops1 * 1e9 / flop_per_s[0], "%.3f").c_str(),
                 Figure(flops.per_step * cpu_step1 / cpu_peak1, "%.3f").c_str(),
@@ -298,7 +300,8 @@ void PrintRoofline(const RecordingReporter& r) {
                 Figure(vel_scalar / vel1, "%.1fx").c_str(),
                 Figure(cpu_vel_scalar / cpu_vel1, "%.1fx").c_str());
   }
-  std::printf("(flop/vel2-10: counted flops of velocity iterations 2-10 as they run, "
+  std::printf("(div+sqrt: divisions and square roots per step, of flop/step; transc: flops "
+              "charged for sin, cos, atan, atan2, fmod; flop/vel2-10: counted flops of velocity iterations 2-10 as they run, "
               "flop/vit: one full velocity iteration; of peak: counted GFLOP/s over the FMA peak "
               "of the same thread count; 2T: the same at 2 threads; vel: velocity iterations "
               "2-10 alone, time of 10 iterations minus 1; (CPU): the same per CPU second of the "
