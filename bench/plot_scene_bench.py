@@ -9,7 +9,8 @@ and draws two PNGs:
   <prefix>-roofline.png    achieved GFLOP/s of the whole step and of the
                            velocity iterations (10 minus 1) per scene at 4096
                            worlds, 1 thread, against the FMA peak measured in
-                           the same run.
+                           the same run;
+and prints the README's results table (markdown, 4096 worlds) to stdout.
 Needs matplotlib for Debian's /usr/bin/python3 (apt-get install python3-matplotlib).
 
   bench/plot_scene_bench.py run.json docs/results/scene_bench
@@ -110,7 +111,42 @@ def main(path, prefix):
     fig.savefig(f"{prefix}-roofline.png", dpi=90)
 
 
+def print_table(path):
+    """The README's results table (markdown) from the same run, 4096 worlds."""
+    _, rows = load(path)
+    peak = {t: rows.get(f"peak/fma/threads:{t}", {}).get("GFLOPs") for t in (1, 2)}
+    w = TABLE_WORLDS
+
+    def rate(name):
+        return rows[name]["items_per_second"] if name in rows else float("nan")
+
+    print("| scene | 1 thread (world-steps/s) | 2 threads | 2T / 1T | batch / reference "
+          "| SIMD, whole step | SIMD, velocity iterations | flop / world-step "
+          "| of FMA peak, step (1T) | of FMA peak, velocity iterations (1T) | bytes / world |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|")
+    scenes = [m.group(1) for n in rows
+              for m in [re.fullmatch(rf"batch/([^/]+)/worlds:{w}/threads:1", n)] if m]
+    for scene in scenes:
+        one = rate(f"batch/{scene}/worlds:{w}/threads:1")
+        two = rate(f"batch/{scene}/worlds:{w}/threads:2")
+        ref = rate(f"reference/{scene}/worlds:64")
+        scalar = rate(f"scalar/{scene}/worlds:{w}/threads:1")
+        v1 = rate(f"batch-v1/{scene}/worlds:{w}/threads:1")
+        sv1 = rate(f"scalar-v1/{scene}/worlds:{w}/threads:1")
+        row = rows[f"batch/{scene}/worlds:{w}/threads:1"]
+        flops = row["flop_per_world_step"]
+        vflops = flops - rows[f"batch-v1/{scene}/worlds:{w}/threads:1"]["flop_per_world_step"]
+        vtime = 1 / one - 1 / v1
+        svtime = 1 / scalar - 1 / sv1
+        print(f"| {scene} | {one:.3g} | {two:.3g} | {two / one:.2f}x | {one / ref:.1f}x "
+              f"| {one / scalar:.1f}x | {svtime / vtime:.1f}x | {flops:.0f} "
+              f"| {flops * one * 1e-9 / peak[1]:.0%} | {vflops / vtime * 1e-9 / peak[1]:.0%} "
+              f"| {row['bytes_per_world']:.0f} |")
+    print(f"\nFMA peak: 1 thread {peak[1]:.0f} GFLOP/s, 2 threads {peak[2]:.0f} GFLOP/s")
+
+
 if __name__ == "__main__":
     if len(sys.argv) != 3:
         sys.exit(__doc__)
     main(sys.argv[1], sys.argv[2])
+    print_table(sys.argv[1])
