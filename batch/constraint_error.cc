@@ -218,6 +218,31 @@ double ConstraintErrorOfLane(const StepPlan& plan, const std::byte* block, std::
                       SwingTwistViolation((frame1.conjugate() * frame2).normalized(),
                                           c.swing_twist, read, s.limits));
     }
+    case ConstraintType::kSixDof: {
+      const auto& s = read.at<SixDofConstraintLanes>(c.offset);
+      const Rotation frame1 = b1.q * read(s.frames.constraint_to_body1);
+      const Rotation frame2 = b2.q * read(s.frames.constraint_to_body2);
+      double error = 0.0;
+      if (c.six_dof.rotation_euler) {
+        error = RestRotationError(b1, b2, read(s.inv_initial_orientation));
+      } else if (c.six_dof.rotation_limits) {
+        error = SwingTwistViolation((frame1.conjugate() * frame2).normalized(), c.swing_twist,
+                                    read, s.rotation_limits);
+      }
+      if (c.six_dof.translation_point) {
+        return std::max(error, AnchorError(b1, b2, read, s.fixed_anchors));
+      }
+      if (!c.six_dof.translation_rows) return error;
+      const Vector u = (b2.x + b2.q * read(s.anchors.r2_local)) -
+                       (b1.x + b1.q * read(s.anchors.r1_local));
+      const auto* limits = &read.at<LinearLimitLanes>(c.limit_offset);
+      for (int i = 0; i < 3; ++i) {
+        if (c.six_dof.translation[i] == AxisLimitKind::kFree) continue;
+        const double d = u.dot(frame1 * Vector::Unit(i));
+        error = std::max(error, LimitViolation(d, read(limits[i].min), read(limits[i].max)));
+      }
+      return error;
+    }
     case ConstraintType::kPulley: {
       const auto& s = read.at<PulleyConstraintLanes>(c.offset);
       const double length =
