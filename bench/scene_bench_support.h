@@ -50,10 +50,12 @@ inline std::size_t& NonFiniteWorldTally() {
 // by the benchmark's first trial run and stepped on by the later ones (Google
 // Benchmark calls the function several times); one at a time, so only one
 // batch is alive. `name` identifies the benchmark. Batches above
-// `max_bytes` are skipped (the machine is shared).
+// `max_bytes` are skipped (the machine is shared). `settings` defaults to the
+// spec's; scene_bench's velocity-phase rows pass more velocity iterations.
 inline void RunBatch(benchmark::State& state, const std::string& name, const std::string& id,
                      std::size_t worlds, int threads, std::int64_t target = 0,
-                     double max_bytes = 2.0 * (1ull << 30)) {
+                     double max_bytes = 2.0 * (1ull << 30),
+                     const StepSettings& settings = StepSettings{}) {
   struct Run {
     std::string name;
     std::unique_ptr<Batch> batch;
@@ -61,7 +63,6 @@ inline void RunBatch(benchmark::State& state, const std::string& name, const std
     std::uint64_t step = 0;
   };
   static Run run;
-  const StepSettings settings;
   if (run.name != name) {
     run = Run{};
     const Scene scene = MakeReferenceScene(id);
