@@ -51,9 +51,9 @@ constexpr const char* kUsage =
     "      (1 2 4 8), velocity (1 2 4 8 10) and position iterations (0 1 2), one knob\n"
     "      at a time from 1/10/2 (--grid full: every combination), and writes\n"
     "      DIR/sweep.csv, sweep.md, sweep.gp and, when gnuplot is installed, one PNG\n"
-    "      per scene (defaults: every scene, 1024 worlds timed on 1 thread, 2 s\n"
-    "      simulated, errors over 16 worlds, out dir 'sweep'; --small: cartpole and\n"
-    "      rackpinion, 64 worlds, 0.25 s, 2 settings per knob; see docs/accuracy.md)\n";
+    "      per scene (defaults: every scene, 1024 worlds timed on 1 thread, 1 s\n"
+    "      simulated, errors over 16 worlds, out dir 'sweep'; --small: rackpinion and\n"
+    "      chain16, 64 worlds, 0.25 s, 2 values per knob; see docs/accuracy.md)\n";
 
 // The scene of --scene; a UsageError naming the option for an unknown id.
 Scene SceneOf(const Options& options) {

@@ -12,6 +12,7 @@
 #include <ctime>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <span>
 #include <sstream>
@@ -162,7 +163,7 @@ struct Config {
   std::vector<std::string> scenes;
   std::size_t worlds = 1024;
   std::size_t sample_worlds = 16;
-  double seconds = 2.0;
+  double seconds = 1.0;
   double min_time = 0.3;
   int threads = 1;
   bool full_grid = false;
@@ -204,7 +205,9 @@ Config ConfigOf(int argc, char** argv) {
   config.sample_worlds =
       options.Number("--sample-worlds", config.small ? 4 : 16, 1, 4096);
   config.sample_worlds = std::min(config.sample_worlds, config.worlds);
-  config.seconds = options.Real("--seconds", config.small ? 0.25 : 2.0, 1e-3, 3600.0);
+  // 1 s: long enough for drift to show, short enough that the chains' chaos
+  // (they are multiple pendulums) does not swamp the trajectory error.
+  config.seconds = options.Real("--seconds", config.small ? 0.25 : 1.0, 1e-3, 3600.0);
   config.min_time = options.Real("--min-time", config.small ? 0.01 : 0.3, 0.0, 3600.0);
   config.threads = int(options.Number("--threads", 1, 0, 4096));
   const std::string grid = options.Text("--grid", "knobs");
@@ -488,28 +491,47 @@ std::string Identifier(std::string id) {
   return id;
 }
 
-// Columns of the gnuplot data blocks (1-based, as gnuplot counts).
-struct Panel {
+// The metrics plotted, one panel each; `applies` false: not measured for
+// this scene.
+struct PlotMetric {
   const char* title;
-  int column;
+  double (*value)(const Row&);
+  bool (*applies)(const Row&);
 };
+bool Always(const Row&) { return true; }
+const PlotMetric kPlotMetrics[] = {
+    {"position error RMS (m, rad)", [](const Row& r) { return r.position.Rms(); }, Always},
+    {"position error max (m, rad)", [](const Row& r) { return r.position.Max(); }, Always},
+    {"velocity residual |Jv| RMS (m/s, rad/s)", [](const Row& r) { return r.velocity.Rms(); },
+     Always},
+    {"trajectory error RMS (m)", [](const Row& r) { return r.trajectory_position.Rms(); },
+     Always},
+    {"trajectory error RMS (rad)", [](const Row& r) { return r.trajectory_rotation.Rms(); },
+     Always},
+    {"energy drift max (J)", [](const Row& r) { return r.energy.Max(); },
+     [](const Row& r) { return r.has_energy; }},
+    {"coupling error RMS (rad)", [](const Row& r) { return r.coupling.Rms(); },
+     [](const Row& r) { return r.has_coupling; }},
+};
+constexpr int kMetricCount = int(std::size(kPlotMetrics));
+
+// Data block columns (1-based, as gnuplot counts): 1 the knob's value, 2 ns
+// per world-step, then one per metric (NaN where it does not apply), last
+// whether it is the default setting (labelled once, not once per curve).
+constexpr int kFirstMetricColumn = 3;
+constexpr int kDefaultColumn = kFirstMetricColumn + kMetricCount;
+
+std::string DataLine(const Row& r, int knob_value) {
+  const auto number = [](double v) { return std::isnan(v) ? std::string("NaN") : Number(v); };
+  std::string line = std::to_string(knob_value) + ' ' + number(r.ns_per_world_step);
+  for (const PlotMetric& metric : kPlotMetrics) {
+    line += ' ' + (metric.applies(r) ? number(metric.value(r)) : std::string("NaN"));
+  }
+  return line + ' ' + (KnobLabel(r.knobs) == "default" ? '1' : '0') + '\n';
+}
 
 void WriteGnuplot(std::ostream& gp, const std::vector<Row>& rows, const Config& config,
                   const Machine& machine) {
-  // Data block columns: 1 knob value, 2 ns per world-step, 3-9 the metrics,
-  // 10 whether it is the default setting (labelled once, not per curve).
-  const auto data_line = [](const Row& r, int value) {
-    const auto or_nan = [](bool present, double v) {
-      return present ? Number(v) : std::string("NaN");
-    };
-    const auto nan_safe = [](double v) { return std::isnan(v) ? std::string("NaN") : Number(v); };
-    return std::to_string(value) + ' ' + nan_safe(r.ns_per_world_step) + ' ' +
-           nan_safe(r.position.Rms()) + ' ' + nan_safe(r.position.Max()) + ' ' +
-           nan_safe(r.velocity.Rms()) + ' ' + nan_safe(r.trajectory_position.Rms()) + ' ' +
-           nan_safe(r.trajectory_rotation.Rms()) + ' ' + or_nan(r.has_energy, r.energy.Max()) +
-           ' ' + or_nan(r.has_coupling, r.coupling.Rms()) + ' ' +
-           (KnobLabel(r.knobs) == "default" ? '1' : '0') + '\n';
-  };
   gp << "# Error against ns per world-step, one curve per knob: written by\n"
      << "# " << config.command_line << "\n# Run: gnuplot sweep.gp (in this directory).\n"
      << "set terminal pngcairo noenhanced size 1500,900 font ',10'\n"
@@ -524,7 +546,6 @@ void WriteGnuplot(std::ostream& gp, const std::vector<Row>& rows, const Config& 
   }
   for (const std::string& scene : scenes) {
     const std::string id = Identifier(scene);
-    bool has_energy = false, has_coupling = false;
     for (Knob knob : kKnobs) {
       gp << '$' << id << '_' << KnobName(knob) << " << EOD\n";
       std::vector<const Row*> curve;
@@ -534,52 +555,54 @@ void WriteGnuplot(std::ostream& gp, const std::vector<Row>& rows, const Config& 
       std::sort(curve.begin(), curve.end(), [knob](const Row* a, const Row* b) {
         return KnobValue(a->knobs, knob) < KnobValue(b->knobs, knob);
       });
-      for (const Row* r : curve) {
-        gp << data_line(*r, KnobValue(r->knobs, knob));
-        has_energy = r->has_energy;
-        has_coupling = r->has_coupling;
-      }
+      for (const Row* r : curve) gp << DataLine(*r, KnobValue(r->knobs, knob));
       gp << "EOD\n";
     }
     gp << '$' << id << "_default << EOD\n";
     for (const Row& r : rows) {
-      if (r.scene == scene && KnobLabel(r.knobs) == "default") gp << data_line(r, 0);
+      if (r.scene == scene && KnobLabel(r.knobs) == "default") gp << DataLine(r, 0);
     }
     gp << "EOD\n";
     if (config.full_grid) {
       gp << '$' << id << "_grid << EOD\n";
       for (const Row& r : rows) {
-        if (r.scene == scene) gp << data_line(r, 0);
+        if (r.scene == scene) gp << DataLine(r, 0);
       }
       gp << "EOD\n";
     }
-    std::vector<Panel> panels = {{"position error RMS (m, rad)", 3},
-                                 {"position error max (m, rad)", 4},
-                                 {"velocity residual |Jv| RMS (m/s, rad/s)", 5},
-                                 {"trajectory error RMS (m)", 6},
-                                 {"trajectory error RMS (rad)", 7}};
-    if (has_energy) panels.push_back({"energy drift max (J)", 8});
-    if (has_coupling) panels.push_back({"coupling error RMS (rad)", 9});
+    // A panel only for a metric with a positive value somewhere: a log axis
+    // cannot show zeros (e.g. geartrain's gears never leave their axles, so
+    // its position trajectory error is exactly 0); the table has them.
+    std::vector<int> panels;
+    for (int m = 0; m < kMetricCount; ++m) {
+      for (const Row& r : rows) {
+        if (r.scene == scene && kPlotMetrics[m].applies(r) && kPlotMetrics[m].value(r) > 0.0) {
+          panels.push_back(m);
+          break;
+        }
+      }
+    }
     gp << "set output '" << scene << ".png'\n"
        << "set multiplot layout " << (panels.size() + 2) / 3 << ",3 title '" << scene
        << ": error against cost, one knob varied at a time from the default (labels: its "
           "value)'\n";
-    for (const Panel& panel : panels) {
-      gp << "set title '" << panel.title << "'\nplot ";
+    for (int m : panels) {
+      const int column = kFirstMetricColumn + m;
+      gp << "set title '" << kPlotMetrics[m].title << "'\nplot ";
       if (config.full_grid) {
-        gp << '$' << id << "_grid using 2:" << panel.column
-           << " with points pt 7 ps 0.4 lc rgb '#bbbbbb' title 'grid', ";
+        gp << '$' << id << "_grid using 2:" << column
+           << " with points pt 7 ps 0.4 lc rgb '#bbbbbb' title 'every combination', ";
       }
       const char* colours[] = {"#1f77b4", "#d62728", "#2ca02c"};
       for (int k = 0; k < 3; ++k) {
         const std::string data = '$' + id + '_' + KnobName(kKnobs[k]);
-        gp << (k ? ", " : "") << data << " using 2:" << panel.column
+        gp << (k ? ", " : "") << data << " using 2:" << column
            << " with linespoints pt 7 lc rgb '" << colours[k] << "' title '"
-           << CurveTitle(kKnobs[k]) << "', " << data << " using 2:" << panel.column
-           << ":($10 > 0 ? '' : sprintf('%d', $1)) with labels offset char 0.8,0.6 tc rgb '"
-           << colours[k] << "' notitle";
+           << CurveTitle(kKnobs[k]) << "', " << data << " using 2:" << column << ":($"
+           << kDefaultColumn << " > 0 ? '' : sprintf('%d', $1)) with labels offset char 0.8,0.6"
+           << " tc rgb '" << colours[k] << "' notitle";
       }
-      gp << ", $" << id << "_default using 2:" << panel.column
+      gp << ", $" << id << "_default using 2:" << column
          << " with points pt 7 ps 1.5 lc rgb 'black' title 'default 1 / 10 / 2'\n";
     }
     gp << "unset multiplot\n";
