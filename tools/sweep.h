@@ -7,10 +7,11 @@
 //
 //   cost      ns per world-step of Batch::Step (actions applied every step):
 //             a batch of --worlds worlds on --threads threads, stepped
-//             --seconds of simulated time per round after an untimed warm-up
-//             round, rounds repeated until --min-time of timed stepping (at
-//             least 3), the fastest round reported (the least disturbed on a
-//             shared machine);
+//             --seconds of simulated time per round: an untimed warm-up
+//             round, then rounds until --min-time of timed stepping (at least
+//             one). Timed in --passes passes over every setting of every
+//             scene after all errors are measured; the fastest round of all
+//             passes is reported (the least disturbed on a shared machine);
 //   accuracy  over the first --sample-worlds worlds (the same worlds: a
 //             world's bits do not depend on the batch size), after every step
 //             of the same --seconds:
