@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <ctime>
+#include <ctime>  // also POSIX clock_gettime
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -303,25 +303,44 @@ struct Machine {
   std::string target;
   std::size_t lanes = 0;
   int threads = 0;
+  std::string clock;  // what the cost was timed with
 };
+
+// Seconds of CPU time used by this process so far. On 1 thread that is the
+// cost of the steps alone: the time other programs on a shared machine take
+// the core away does not count (wall time on this build machine varied 2x
+// between passes of the same setting).
+double ProcessCpuSeconds() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
+
+double WallSeconds() {
+  return std::chrono::duration<double>(Clock::now().time_since_epoch()).count();
+}
 
 // ns per world-step of Batch::Step with the scene's actions, one pass (see
 // sweep.h): an untimed warm-up round, then timed rounds until --min-time;
-// the fastest round.
+// the fastest round. Process CPU time on 1 thread, wall time on more (where
+// CPU time would add up the threads).
 double TimeSteps(const Scene& scene, const SceneActions& actions, const Config& config,
                  std::uint64_t steps, const StepSettings& settings, Machine& machine) {
   Batch batch(scene, config.worlds, BatchOptions{.threads = config.threads});
-  machine = Machine{batch.SimdTarget(), batch.SimdLanes(), batch.threads()};
+  const bool cpu_time = batch.threads() == 1;
+  machine = Machine{batch.SimdTarget(), batch.SimdLanes(), batch.threads(),
+                    cpu_time ? "process CPU time" : "wall time"};
+  const auto now = cpu_time ? ProcessCpuSeconds : WallSeconds;
   const std::vector<std::uint8_t> every_world(config.worlds, 1);
   double fastest = std::numeric_limits<double>::infinity(), timed = 0.0;
   for (int round = 0; round < 2 || timed < config.min_time; ++round) {
     batch.Reset(every_world);  // every round times the same steps
-    const auto start = Clock::now();
+    const double start = now();
     for (std::uint64_t step = 0; step < steps; ++step) {
       actions.Apply(batch, step, config.seed);
       batch.Step(settings);
     }
-    const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    const double seconds = now() - start;
     if (round == 0) continue;  // warm-up: page faults, caches, TBB's threads
     fastest = std::min(fastest, seconds);
     timed += seconds;
@@ -433,7 +452,8 @@ void WriteMarkdown(std::ostream& md, const std::vector<Row>& rows, const Config&
      << machine.threads << " thread(s), SIMD target " << machine.target << " ("
      << machine.lanes << " float lanes), float, dt " << Number(double(base.delta_time))
      << " s, Baumgarte " << Number(double(base.baumgarte))
-     << ", actions every step; the fastest of " << config.passes
+     << ", actions every step, timed with " << machine.clock << "; the fastest of "
+     << config.passes
      << " pass(es) over every setting, each an untimed warm-up round and then rounds of "
      << steps << " steps until " << Number(config.min_time) << " s\n"
      << "- errors: over " << config.sample_worlds << " worlds and every step of "
