@@ -43,9 +43,6 @@ namespace manyworlds::tools {
 // The scenes the sweep runs by default. The stress scenes join here.
 std::vector<std::string> SweepSceneIds();
 
-// The CSV header line (without newline): what sweep_smoke checks.
-std::string SweepCsvHeader();
-
 // The command; argv[1] is "sweep". Throws UsageError for bad options.
 int Sweep(int argc, char** argv);
 
