@@ -282,10 +282,46 @@ class Batch::Impl {
   }
 
   // ---- per-constraint parameters
+  // Swing-twist and six-DOF drives have one motor per axis; the single-value
+  // setters of hinges and sliders would not say which.
+  static void RefuseMultiAxis(const ConstraintPlan& c, const char* what) {
+    if (c.type == ConstraintType::kSwingTwist || c.type == ConstraintType::kSixDof) {
+      throw SceneError(c.label + ": " + what + " of a " + ConstraintTypeName(c.type) +
+                       " constraint is set per axis (SetTargetOrientation, "
+                       "SetTargetAngularVelocity, SetTargetTranslation, "
+                       "SetTargetLinearVelocity; other settings in the scene)");
+    }
+  }
+
+  // The rotation drives of a swing-twist or six-DOF constraint.
+  RotationDriveLanes& RotationDrive(std::size_t world, std::size_t constraint, const char* what) {
+    CheckWorld(world);
+    const ConstraintPlan& c = Constraint(constraint);
+    if (!c.has_rotation_drives()) {
+      throw SceneError(c.label + ": " + what +
+                       " needs rotation motors or friction (a swing-twist or six-DOF "
+                       "constraint with a motor state or max friction)");
+    }
+    return In<RotationDriveLanes>(world, c.rotation_drive_offset);
+  }
+
+  // The three translation drives of a six-DOF constraint.
+  LinearMotorLanes* TranslationDrives(std::size_t world, std::size_t constraint,
+                                      const char* what) {
+    CheckWorld(world);
+    const ConstraintPlan& c = Constraint(constraint);
+    if (c.type != ConstraintType::kSixDof || !c.has_motor()) {
+      throw SceneError(c.label + ": " + what +
+                       " needs a six-DOF constraint with translation motors or friction");
+    }
+    return &In<LinearMotorLanes>(world, c.motor_offset);
+  }
+
   template <class Fn>
   void WithMotor(std::size_t world, std::size_t constraint, const char* what, Fn&& fn) {
     CheckWorld(world);
     const ConstraintPlan& c = Constraint(constraint);
+    RefuseMultiAxis(c, what);
     if (c.motor_offset == kAbsent) {
       throw SceneError(c.label + ": " + what +
                        " needs a motor or friction in the scene (motor_state / max friction)");
@@ -300,6 +336,7 @@ class Batch::Impl {
   void WithLimits(std::size_t world, std::size_t constraint, const char* what, Fn&& fn) {
     CheckWorld(world);
     const ConstraintPlan& c = Constraint(constraint);
+    RefuseMultiAxis(c, what);
     if (c.limit_offset == kAbsent) {
       throw SceneError(c.label + ": " + what + " needs limits in the scene");
     }
@@ -510,6 +547,49 @@ void Batch::SetTargetPosition(std::size_t world, std::size_t constraint, float p
                                impl_->ClampedTarget(world, c, position);
                          });
   impl_->NoteInput(world, position);
+}
+
+void Batch::SetTargetOrientation(std::size_t world, std::size_t constraint,
+                                 Quaternion orientation) {
+  RotationDriveLanes& drive = impl_->RotationDrive(world, constraint, "a target orientation");
+  const double length = std::sqrt(double(orientation[0]) * orientation[0] +
+                                  double(orientation[1]) * orientation[1] +
+                                  double(orientation[2]) * orientation[2] +
+                                  double(orientation[3]) * orientation[3]);
+  if (length == 0.0) {
+    throw SceneError(impl_->Constraint(constraint).label +
+                     ": target orientation is a zero quaternion");
+  }
+  const std::size_t l = Impl::Lane(world);
+  drive.target_orientation.x[l] = float(orientation[0] / length);
+  drive.target_orientation.y[l] = float(orientation[1] / length);
+  drive.target_orientation.z[l] = float(orientation[2] / length);
+  drive.target_orientation.w[l] = float(orientation[3] / length);
+  impl_->NoteInput(world, orientation[0], orientation[1], orientation[2], orientation[3]);
+}
+
+void Batch::SetTargetAngularVelocity(std::size_t world, std::size_t constraint,
+                                     Float3 angular_velocity) {
+  RotationDriveLanes& drive =
+      impl_->RotationDrive(world, constraint, "a target angular velocity");
+  for (int i = 0; i < 3; ++i) {
+    drive.rows[i].target_velocity[Impl::Lane(world)] = angular_velocity[i];
+  }
+  impl_->NoteInput(world, angular_velocity[0], angular_velocity[1], angular_velocity[2]);
+}
+
+void Batch::SetTargetTranslation(std::size_t world, std::size_t constraint,
+                                 Float3 translation) {
+  LinearMotorLanes* drives = impl_->TranslationDrives(world, constraint, "a target translation");
+  for (int i = 0; i < 3; ++i) drives[i].target_position[Impl::Lane(world)] = translation[i];
+  impl_->NoteInput(world, translation[0], translation[1], translation[2]);
+}
+
+void Batch::SetTargetLinearVelocity(std::size_t world, std::size_t constraint, Float3 velocity) {
+  LinearMotorLanes* drives =
+      impl_->TranslationDrives(world, constraint, "a target linear velocity");
+  for (int i = 0; i < 3; ++i) drives[i].target_velocity[Impl::Lane(world)] = velocity[i];
+  impl_->NoteInput(world, velocity[0], velocity[1], velocity[2]);
 }
 
 void Batch::SetTargetVelocities(std::size_t constraint, std::span<const float> per_world) {

@@ -243,6 +243,31 @@ double ConstraintErrorOfLane(const StepPlan& plan, const std::byte* block, std::
                       SwingTwistViolation((frame1.conjugate() * frame2).normalized(),
                                           c.swing_twist, read, s.limits));
     }
+    case ConstraintType::kSixDof: {
+      const auto& s = read.at<SixDofConstraintLanes>(c.offset);
+      const Rotation frame1 = b1.q * read(s.frames.constraint_to_body1);
+      const Rotation frame2 = b2.q * read(s.frames.constraint_to_body2);
+      double error = 0.0;
+      if (c.six_dof.rotation_euler) {
+        error = RestRotationError(b1, b2, read(s.inv_initial_orientation));
+      } else if (c.six_dof.rotation_limits) {
+        error = SwingTwistViolation((frame1.conjugate() * frame2).normalized(), c.swing_twist,
+                                    read, s.rotation_limits);
+      }
+      if (c.six_dof.translation_point) {
+        return std::max(error, AnchorError(b1, b2, read, s.fixed_anchors));
+      }
+      if (!c.six_dof.translation_rows) return error;
+      const Vector u = (b2.x + b2.q * read(s.anchors.r2_local)) -
+                       (b1.x + b1.q * read(s.anchors.r1_local));
+      const auto* limits = &read.at<LinearLimitLanes>(c.limit_offset);
+      for (int i = 0; i < 3; ++i) {
+        if (c.six_dof.translation[i] == AxisLimitKind::kFree) continue;
+        const double d = u.dot(frame1 * Vector::Unit(i));
+        error = std::max(error, LimitViolation(d, read(limits[i].min), read(limits[i].max)));
+      }
+      return error;
+    }
     case ConstraintType::kPulley: {
       const auto& s = read.at<PulleyConstraintLanes>(c.offset);
       const double length =
@@ -332,6 +357,30 @@ double ConstraintVelocityErrorOfLane(const StepPlan& plan, const std::byte* bloc
     case ConstraintType::kSwingTwist:
       return AnchorVelocityError(b1, m1, b2, m2, read,
                                  read.at<SwingTwistConstraintLanes>(c.offset).anchors);
+    case ConstraintType::kSixDof: {
+      const auto& s = read.at<SixDofConstraintLanes>(c.offset);
+      const double rotation = c.six_dof.rotation_euler ? (m2.w - m1.w).norm() : 0.0;
+      if (c.six_dof.translation_point) {
+        // The constrained points: body 1's anchor moved by c1 limit_min.
+        return std::max(rotation, AnchorVelocityError(b1, m1, b2, m2, read, s.fixed_anchors));
+      }
+      const Vector r1 = b1.q * read(s.anchors.r1_local);
+      const Vector r2 = b2.q * read(s.anchors.r2_local);
+      const Vector u = (b2.x + r2) - (b1.x + r1);
+      // d/dt of u . a_i for the frame axes a_i turning with body 1 (the
+      // slider's rows), over the hard fixed axes only.
+      const Vector rate = PointVelocity(m2, r2) - PointVelocity(m1, r1 + u);
+      const Rotation frame1 = b1.q * read(s.frames.constraint_to_body1);
+      double squared = 0.0;
+      for (int i = 0; i < 3; ++i) {
+        if (c.six_dof.translation[i] != AxisLimitKind::kLocked || c.six_dof.translation_soft[i]) {
+          continue;
+        }
+        const double along = rate.dot(frame1 * Vector::Unit(i));
+        squared += along * along;
+      }
+      return std::max(rotation, std::sqrt(squared));
+    }
   }
   return 0.0;
 }

@@ -40,6 +40,9 @@ double ConstraintErrorOfLane(const StepPlan& plan, const std::byte* block, std::
 //   distance   |d/dt |p2 - p1|| when min = max (a rod), else 0
 //   pulley     |dL/dt| when min = max, else 0
 //   cone, swing-twist   the anchor rows, |v_p2 - v_p1|
+//   six-DOF    max(|w2 - w1| when every rotation is fixed, the slider's rows
+//              along the hard fixed translation axes of body 1's frame, or
+//              |v_p2 - v_p1| at the fixed anchors when every translation is)
 //
 // Limit rows, motors, friction and the cone and swing-twist angle limits are
 // inequalities or drives, not equalities: a non-zero velocity along them is

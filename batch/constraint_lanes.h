@@ -139,13 +139,55 @@ struct ConeConstraintLanes {
   AngleLanes angle;
 };
 
-// ---- Swing-twist: the swing-twist part (limits), then a point part.
+// ---- Rotation drives of swing-twist and six-DOF: one motor or friction row
+// about each axis of body 2's constraint frame (X = twist, Y and Z = swing);
+// geometry.spring holds the per-world motor spring.
+struct AngularDriveRowLanes {
+  LaneArray target_velocity;                   // rad/s about this axis
+  LaneArray min_force_limit, max_force_limit;  // N m
+  LaneArray max_friction;                      // N m
+  AngleGeometry geometry;
+  AngleLanes part;
+};
+struct RotationDriveLanes {
+  // Body 2's constraint frame relative to body 1's that position drives aim
+  // at, unit, as given: it is clamped into the limits at every setup.
+  QuatLanes target_orientation;
+  AngularDriveRowLanes rows[3];
+};
+
+// ---- Swing-twist: [drives] -> the swing-twist part (limits) -> point.
 struct SwingTwistConstraintLanes {
   PointGeometry anchors;
   SwingTwistGeometry frames;       // constraint frame to body 1 / body 2 (parameters)
   SwingTwistLimitLanes limits;     // per world (parameters)
   SwingTwistLanes swing_twist;
   PointLanes point;
+};
+
+// ---- Six-DOF: [translation drives] -> [rotation drives] -> rotation Euler
+// (all rotations fixed) or swing-twist (some constrained) -> point (all
+// translations fixed, no springs) or up to three translation limit rows.
+// The translation limit rows are three LinearLimitLanes at the limit
+// offset, the translation drives three LinearMotorLanes at the motor offset,
+// the rotation drives a RotationDriveLanes.
+struct SixDofConstraintLanes {
+  PointGeometry anchors;
+  // The point part's anchors in the position phase when every translation is
+  // fixed: body 1's moved by c1 limit_min (Jolt keeps the velocity rows on
+  // the plain anchors).
+  PointGeometry fixed_anchors;
+  SwingTwistGeometry frames;          // c1, c2 (parameters)
+  SwingTwistLimitLanes rotation_limits;
+  // c2 (c1 euler(limit_min))*: the rotation-Euler position target when every
+  // rotation is fixed.
+  QuatLanes inv_initial_orientation;
+  Vec3Lanes r1_plus_u, r2;            // lever arms of the translation rows this step
+  Vec3Lanes translation_axis[3];      // columns of R(q1 c1) this step
+  LaneArray displacement[3];          // (p2 - p1) . axis_i this step
+  PointLanes point;
+  RotationEulerLanes rotation;
+  SwingTwistLanes swing_twist;
 };
 
 }  // namespace manyworlds

@@ -2,6 +2,7 @@
 
 #include "batch/plan.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <type_traits>
@@ -29,6 +30,7 @@ const char* SettingsTypeName(const ConstraintSettings& settings) {
         if constexpr (std::is_same_v<S, PulleyConstraintSettings>) return "pulley";
         if constexpr (std::is_same_v<S, ConeConstraintSettings>) return "cone";
         if constexpr (std::is_same_v<S, SwingTwistConstraintSettings>) return "swing_twist";
+        if constexpr (std::is_same_v<S, SixDofConstraintSettings>) return "six_dof";
       },
       settings);
 }
@@ -136,22 +138,32 @@ void CheckSpring(const std::string& what, const std::string& field,
 }
 
 void CheckMotor(const std::string& what, MotorState state, const MotorSettings& motor,
-                float max_friction, const char* friction_field) {
+                float max_friction, const std::string& friction_field,
+                const std::string& motor_field = "motor") {
   if (!Finite(max_friction) || max_friction < 0.0f) {
     Refuse(what, friction_field, "must be finite and >= 0");
   }
   if (std::isnan(motor.min_force_limit) || std::isnan(motor.max_force_limit) ||
       motor.min_force_limit > motor.max_force_limit) {
-    Refuse(what, "motor.min_force_limit / max_force_limit",
+    Refuse(what, motor_field + ".min_force_limit / max_force_limit",
            "must be ordered, min <= max");
   }
-  CheckSpring(what, "motor.spring", motor.spring);
+  CheckSpring(what, motor_field + ".spring", motor.spring);
   if (state == MotorState::kPosition && !motor.spring.HasStiffness()) {
-    Refuse(what, "motor.spring", "needs a positive frequency or stiffness for a position motor");
+    Refuse(what, motor_field + ".spring",
+           "needs a positive frequency or stiffness for a position motor");
   }
   if (state == MotorState::kPositionAndVelocity && !motor.spring.HasStiffnessOrDamping()) {
-    Refuse(what, "motor.spring",
+    Refuse(what, motor_field + ".spring",
            "needs stiffness or damping for a position-and-velocity motor");
+  }
+}
+
+void CheckOrientation(const std::string& what, const std::string& field, const Quaternion& q) {
+  if (!Finite(q)) Refuse(what, field, "has a non-finite component");
+  if (std::sqrt(double(q[0]) * q[0] + double(q[1]) * q[1] + double(q[2]) * q[2] +
+                double(q[3]) * q[3]) < 1e-6) {
+    Refuse(what, field, "is a zero quaternion");
   }
 }
 
@@ -183,6 +195,99 @@ class BlockLayout {
   std::size_t bytes_ = 0;
 };
 
+// Checks a six-DOF constraint and decides its parts (spec 3, SixDOF).
+void PlanSixDof(const std::string& what, const SixDofConstraintSettings& s,
+                       ConstraintPlan& c, BlockLayout& layout) {
+  CheckFinite(what, "position1", s.position1);
+  CheckFinite(what, "position2", s.position2);
+  CheckAxis(what, "axis_x1", s.axis_x1);
+  CheckAxis(what, "axis_y1", s.axis_y1);
+  CheckAxis(what, "axis_x2", s.axis_x2);
+  CheckAxis(what, "axis_y2", s.axis_y2);
+  CheckPerpendicular(what, "axis_x1", s.axis_x1, "axis_y1", s.axis_y1);
+  CheckPerpendicular(what, "axis_x2", s.axis_x2, "axis_y2", s.axis_y2);
+  // "name[i]", built by appending (GCC 12 warns falsely on "[" + string).
+  const auto indexed = [](const char* name, std::size_t i) {
+    std::string field(name);
+    field += '[';
+    field += std::to_string(i);
+    field += ']';
+    return field;
+  };
+  for (std::size_t i = 0; i < kSixDofAxes; ++i) {
+    if (std::isnan(s.limit_min[i])) Refuse(what, indexed("limit_min", i), "is NaN");
+    if (std::isnan(s.limit_max[i])) Refuse(what, indexed("limit_max", i), "is NaN");
+    CheckMotor(what, s.motor_state[i], s.motor[i], s.max_friction[i],
+               indexed("max_friction", i), indexed("motor", i));
+  }
+  for (std::size_t i = 0; i < 3; ++i) {
+    CheckSpring(what, indexed("limits_spring", i), s.limits_spring[i]);
+  }
+  CheckFinite(what, "target_velocity", s.target_velocity);
+  CheckFinite(what, "target_angular_velocity", s.target_angular_velocity);
+  CheckFinite(what, "target_position", s.target_position);
+  CheckOrientation(what, "target_orientation", s.target_orientation);
+
+  c.type = ConstraintType::kSixDof;
+  c.offset = layout.Add<SixDofConstraintLanes>();
+  const SixDofLimits limits = NormalizedSixDofLimits(s);
+  SixDofConfig& config = c.six_dof;
+  bool all_fixed = true, any_constrained = false, any_spring = false;
+  for (std::size_t i = 0; i < 3; ++i) {
+    config.translation[i] = SixDofAxisKind(limits, i);
+    config.translation_soft[i] = s.limits_spring[i].HasStiffness();
+    config.translation_spring_modes[i] = s.limits_spring[i].mode;
+    all_fixed &= config.translation[i] == AxisLimitKind::kLocked;
+    any_constrained |= config.translation[i] != AxisLimitKind::kFree;
+    any_spring |= config.translation_soft[i];
+  }
+  config.translation_point = all_fixed && !any_spring;
+  config.translation_rows = !config.translation_point && any_constrained;
+  if (config.translation_rows) {
+    c.limit_offset = layout.Add<LinearLimitLanes>();
+    layout.Add<LinearLimitLanes>();
+    layout.Add<LinearLimitLanes>();
+  }
+  if (!config.translation_point) {
+    for (std::size_t i = 0; i < 3; ++i) {
+      config.translation_drives[i] = DriveOf(s.motor_state[i], s.max_friction[i]);
+      config.translation_drive_spring_modes[i] = s.motor[i].spring.mode;
+    }
+  }
+  if (config.has_translation_drives()) {
+    c.motor_offset = layout.Add<LinearMotorLanes>();
+    layout.Add<LinearMotorLanes>();
+    layout.Add<LinearMotorLanes>();
+  }
+
+  bool rotation_all_fixed = true, rotation_constrained = false;
+  for (std::size_t i = 3; i < 6; ++i) {
+    const AxisLimitKind kind = SixDofAxisKind(limits, i);
+    rotation_all_fixed &= kind == AxisLimitKind::kLocked;
+    rotation_constrained |= kind != AxisLimitKind::kFree;
+  }
+  config.rotation_euler = rotation_all_fixed;
+  config.rotation_limits = !rotation_all_fixed && rotation_constrained;
+  c.swing_twist.swing_type = s.swing_type;
+  c.swing_twist.twist = ClassifyAxisLimit(limits.min[3], limits.max[3]);
+  c.swing_twist.swing_y = ClassifyAxisLimit(limits.min[4], limits.max[4]);
+  c.swing_twist.swing_z = ClassifyAxisLimit(limits.min[5], limits.max[5]);
+  if (!rotation_all_fixed) {
+    c.rotation_position_axes = 0;
+    bool any_drive = false;
+    for (std::size_t i = 0; i < 3; ++i) {
+      c.rotation_drives[i] = DriveOf(s.motor_state[3 + i], s.max_friction[3 + i]);
+      c.rotation_drive_spring_modes[i] = s.motor[3 + i].spring.mode;
+      any_drive |= c.rotation_drives[i] != DriveKind::kNone;
+      if (c.rotation_drives[i] == DriveKind::kPosition ||
+          c.rotation_drives[i] == DriveKind::kPositionAndVelocity) {
+        c.rotation_position_axes |= 1u << i;
+      }
+    }
+    if (any_drive) c.rotation_drive_offset = layout.Add<RotationDriveLanes>();
+  }
+}
+
 }  // namespace
 
 const char* ConstraintTypeName(ConstraintType type) {
@@ -197,6 +302,7 @@ const char* ConstraintTypeName(ConstraintType type) {
     case ConstraintType::kPulley: return "pulley";
     case ConstraintType::kCone: return "cone";
     case ConstraintType::kSwingTwist: return "swing_twist";
+    case ConstraintType::kSixDof: return "six_dof";
   }
   return "unknown";
 }
@@ -254,10 +360,70 @@ std::string ConstraintPlan::PartsInOrder() const {
     case ConstraintType::kPulley: return "independent_axis(limits)";
     case ConstraintType::kCone: return "point angle(cone limit)";
     case ConstraintType::kSwingTwist:
-      return std::string("swing_twist(") +
-             (swing_twist.swing_type == SwingType::kCone ? "cone" : "pyramid") + ") point";
+      return RotationDrivesInOrder() + "swing_twist(" + SwingTypeText() + ") point";
+    case ConstraintType::kSixDof: {
+      std::string parts;
+      for (int i = 0; i < 3; ++i) {
+        const DriveKind d = six_dof.translation_drives[i];
+        if (d != DriveKind::kNone) {
+          parts += std::string("axis(") + "XYZ"[i] + " " + DriveKindName(d) + ") ";
+        }
+      }
+      parts += RotationDrivesInOrder();
+      if (six_dof.rotation_euler) parts += "rotation_euler ";
+      if (six_dof.rotation_limits) parts += "swing_twist(" + SwingTypeText() + ") ";
+      if (six_dof.translation_point) parts += "point";
+      for (int i = 0; i < 3 && six_dof.translation_rows; ++i) {
+        const AxisLimitKind k = six_dof.translation[i];
+        if (k == AxisLimitKind::kFree) continue;
+        parts += std::string("axis(") + "XYZ"[i] + " " +
+                 (k == AxisLimitKind::kLocked ? "fixed" : "limits") +
+                 (six_dof.translation_soft[i] ? ", soft" : "") + ") ";
+      }
+      while (!parts.empty() && parts.back() == ' ') parts.pop_back();
+      return parts;
+    }
   }
   return "";
+}
+
+std::string ConstraintPlan::RotationDrivesInOrder() const {
+  std::string parts;
+  for (int i = 0; i < 3; ++i) {
+    if (rotation_drives[i] == DriveKind::kNone) continue;
+    parts += std::string("angle(") + "XYZ"[i] + " " + DriveKindName(rotation_drives[i]) + ") ";
+  }
+  return parts;
+}
+
+std::string ConstraintPlan::SwingTypeText() const {
+  return swing_twist.swing_type == SwingType::kCone ? "cone" : "pyramid";
+}
+
+SixDofLimits NormalizedSixDofLimits(const SixDofConstraintSettings& s) {
+  SixDofLimits limits{s.limit_min, s.limit_max};
+  for (std::size_t i = 0; i < 3; ++i) {
+    if (limits.min[i] > limits.max[i]) limits.min[i] = limits.max[i] = 0.0f;
+  }
+  if (s.swing_type == SwingType::kCone) {
+    for (std::size_t i = 4; i < 6; ++i) {
+      limits.max[i] = std::max(0.0f, limits.max[i]);
+      limits.min[i] = -limits.max[i];
+    }
+  }
+  for (std::size_t i = 3; i < 6; ++i) {
+    limits.min[i] = std::clamp(limits.min[i], -kPi, kPi);
+    limits.max[i] = std::clamp(limits.max[i], -kPi, kPi);
+    if (limits.min[i] > limits.max[i]) limits.min[i] = limits.max[i] = 0.0f;
+  }
+  return limits;
+}
+
+AxisLimitKind SixDofAxisKind(const SixDofLimits& limits, std::size_t axis) {
+  const float bound = axis < 3 ? FLT_MAX : kPi;
+  if (limits.min[axis] >= limits.max[axis]) return AxisLimitKind::kLocked;
+  if (limits.min[axis] <= -bound && limits.max[axis] >= bound) return AxisLimitKind::kFree;
+  return AxisLimitKind::kLimited;
 }
 
 void CheckStepSettings(const StepSettings& s) {
@@ -463,6 +629,24 @@ StepPlan CompilePlan(const Scene& scene) {
                 ClassifyAxisLimit(-s.plane_half_cone_angle, s.plane_half_cone_angle);
             c.swing_twist.swing_z =
                 ClassifyAxisLimit(-s.normal_half_cone_angle, s.normal_half_cone_angle);
+            CheckMotor(what, s.twist_motor_state, s.twist_motor, s.max_friction_torque,
+                       "max_friction_torque", "twist_motor");
+            CheckMotor(what, s.swing_motor_state, s.swing_motor, s.max_friction_torque,
+                       "max_friction_torque", "swing_motor");
+            CheckFinite(what, "target_angular_velocity", s.target_angular_velocity);
+            CheckOrientation(what, "target_orientation", s.target_orientation);
+            c.rotation_drives = {DriveOf(s.twist_motor_state, s.max_friction_torque),
+                                 DriveOf(s.swing_motor_state, s.max_friction_torque),
+                                 DriveOf(s.swing_motor_state, s.max_friction_torque)};
+            c.rotation_drive_spring_modes = {s.twist_motor.spring.mode,
+                                             s.swing_motor.spring.mode,
+                                             s.swing_motor.spring.mode};
+            if (c.rotation_drives[0] != DriveKind::kNone ||
+                c.rotation_drives[1] != DriveKind::kNone) {
+              c.rotation_drive_offset = layout.Add<RotationDriveLanes>();
+            }
+          } else if constexpr (std::is_same_v<S, SixDofConstraintSettings>) {
+            PlanSixDof(what, s, c, layout);
           } else if constexpr (std::is_same_v<S, ConeConstraintSettings>) {
             CheckFinite(what, "point1", s.point1);
             CheckFinite(what, "point2", s.point2);

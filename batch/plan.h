@@ -9,6 +9,7 @@
 // control flow; only per-world decisions are lane masks.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -34,6 +35,7 @@ enum class ConstraintType : std::uint8_t {
   kPulley,
   kCone,
   kSwingTwist,
+  kSixDof,
 };
 const char* ConstraintTypeName(ConstraintType type);
 
@@ -46,6 +48,28 @@ enum class DriveKind : std::uint8_t {
   kPositionAndVelocity,  // both
 };
 const char* DriveKindName(DriveKind kind);
+
+// How a six-DOF constraint is built (spec 3, SixDOF): a scene setting, the
+// same in every world.
+struct SixDofConfig {
+  // Per translation axis: kLocked = fixed, kLimited, kFree.
+  std::array<AxisLimitKind, 3> translation{};
+  bool translation_point = false;  // every translation fixed, no springs: point part
+  bool translation_rows = false;   // limit rows at the limit offset (some constrained)
+  std::array<bool, 3> translation_soft{};  // limit springs (no position steps)
+  std::array<SpringMode, 3> translation_spring_modes{};
+  std::array<DriveKind, 3> translation_drives{};  // motors at the motor offset
+  std::array<SpringMode, 3> translation_drive_spring_modes{};
+  bool rotation_euler = false;   // every rotation fixed: rotation-Euler part
+  bool rotation_limits = false;  // some rotation constrained: swing-twist part
+
+  bool has_translation_drives() const {
+    for (DriveKind d : translation_drives) {
+      if (d != DriveKind::kNone) return true;
+    }
+    return false;
+  }
+};
 
 struct ConstraintPlan {
   ConstraintType type;
@@ -62,14 +86,41 @@ struct ConstraintPlan {
   // Gear: the hinges of body 1 and 2; rack-and-pinion: hinge and slider.
   // Position correction runs only when both are given.
   std::size_t helper1 = kNoConstraint, helper2 = kNoConstraint;
-  // Swing-twist: which axes are locked, limited or free; cone or pyramid.
+  // Swing-twist and six-DOF: which rotation axes are locked, limited or
+  // free; cone or pyramid.
   SwingTwistConfig swing_twist{};
+  // Swing-twist and six-DOF rotation drives about body 2's frame axes X, Y, Z
+  // (RotationDriveLanes at rotation_drive_offset when any is not kNone).
+  std::size_t rotation_drive_offset = kAbsent;
+  std::array<DriveKind, 3> rotation_drives{};
+  std::array<SpringMode, 3> rotation_drive_spring_modes{};
+  // Axes whose position error counts (six-DOF projects the orientation error
+  // onto its position-driven axes; swing-twist keeps all three).
+  unsigned rotation_position_axes = 0b111;
+  SixDofConfig six_dof{};
 
   bool has_limits() const { return limit_offset != kAbsent; }
   bool has_motor() const { return motor_offset != kAbsent; }
+  bool has_rotation_drives() const { return rotation_drive_offset != kAbsent; }
   // The parts in solve order, e.g. "angle(motor) point hinge_rotation".
   std::string PartsInOrder() const;
+
+ private:
+  std::string RotationDrivesInOrder() const;
+  std::string SwingTypeText() const;
 };
+
+// A six-DOF constraint's limits after Jolt's rules (spec 3, SixDOF): a
+// translation with min > max becomes 0 / 0; rotation limits are clamped into
+// [-pi, pi], inverted ones become 0 / 0; a cone's swing limits become the
+// symmetric +-max(0, limit_max). Axis order as SixDofAxis.
+struct SixDofLimits {
+  std::array<float, kSixDofAxes> min, max;
+};
+SixDofLimits NormalizedSixDofLimits(const SixDofConstraintSettings& settings);
+// Fixed (kLocked) when min >= max, free when the range covers +-FLT_MAX
+// (translation) or +-pi (rotation), else limited.
+AxisLimitKind SixDofAxisKind(const SixDofLimits& limits, std::size_t axis);
 
 struct BodyPlan {
   std::string label;

@@ -6,6 +6,7 @@
 #include <Eigen/Dense>
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <array>
 #include <cfloat>
 #include <cmath>
 #include <utility>
@@ -206,6 +207,70 @@ void WriteAxisLimit(AxisLimitLanes& lanes, AxisLimitKind kind, double min, doubl
   Fill(lanes.cos_half_max, limited ? std::cos(0.5 * max) : free ? 0.0 : 1.0);
 }
 
+// The rotation drives of a swing-twist or six-DOF constraint: per axis of
+// body 2's frame (X, Y, Z) its motor settings, friction and target velocity,
+// and the shared target orientation (normalised; clamped by the kernels).
+void WriteRotationDrives(const ConstraintPlan& c, std::byte* block,
+                         const std::array<const MotorSettings*, 3>& motors,
+                         const std::array<float, 3>& max_friction,
+                         const Float3& target_angular_velocity, const Quaternion& target) {
+  if (!c.has_rotation_drives()) return;
+  auto& drive = At<RotationDriveLanes>(block, c.rotation_drive_offset);
+  Fill(drive.target_orientation, ToRotation(target).normalized());
+  for (std::size_t i = 0; i < 3; ++i) {
+    AngularDriveRowLanes& row = drive.rows[i];
+    Fill(row.target_velocity, target_angular_velocity[i]);
+    Fill(row.min_force_limit, motors[i]->min_force_limit);
+    Fill(row.max_force_limit, motors[i]->max_force_limit);
+    Fill(row.max_friction, max_friction[i]);
+    Fill(row.geometry.spring, motors[i]->spring);
+  }
+}
+
+// Jolt's Quat::sEulerAngles: rotation about Z, then Y, then X (q = Rz Ry Rx).
+Rotation EulerRotation(double x, double y, double z) {
+  return Rotation(Eigen::AngleAxisd(z, Vector::UnitZ()) * Eigen::AngleAxisd(y, Vector::UnitY()) *
+                  Eigen::AngleAxisd(x, Vector::UnitX()));
+}
+
+void WriteSixDof(const ConstraintPlan& c, const SixDofConstraintSettings& s, const Frames& frames,
+                 std::byte* block) {
+  auto& lanes = At<SixDofConstraintLanes>(block, c.offset);
+  const Vector r1 = frames.Point1(s.position1), r2 = frames.Point2(s.position2);
+  Fill(lanes.anchors.r1_local, r1);
+  Fill(lanes.anchors.r2_local, r2);
+  const Rotation c1 = FrameRotation(frames.Axis1(s.axis_x1), frames.Axis1(s.axis_y1));
+  const Rotation c2 = FrameRotation(frames.Axis2(s.axis_x2), frames.Axis2(s.axis_y2));
+  Fill(lanes.frames.constraint_to_body1, c1);
+  Fill(lanes.frames.constraint_to_body2, c2);
+  const SixDofLimits limits = NormalizedSixDofLimits(s);
+  const Vector min_translation(limits.min[0], limits.min[1], limits.min[2]);
+  Fill(lanes.fixed_anchors.r1_local, Vector(r1 + c1 * min_translation));
+  Fill(lanes.fixed_anchors.r2_local, r2);
+  Fill(lanes.inv_initial_orientation,
+       InverseInitialOrientation(c1 * EulerRotation(limits.min[3], limits.min[4], limits.min[5]),
+                                 c2));
+  WriteAxisLimit(lanes.rotation_limits.twist, c.swing_twist.twist, limits.min[3],
+                 limits.max[3]);
+  WriteAxisLimit(lanes.rotation_limits.swing_y, c.swing_twist.swing_y, limits.min[4],
+                 limits.max[4]);
+  WriteAxisLimit(lanes.rotation_limits.swing_z, c.swing_twist.swing_z, limits.min[5],
+                 limits.max[5]);
+  for (std::size_t i = 0; i < 3; ++i) {
+    if (c.six_dof.translation_rows) {
+      WriteLimit((&At<LinearLimitLanes>(block, c.limit_offset))[i], limits.min[i], limits.max[i],
+                 s.limits_spring[i]);
+    }
+    if (c.has_motor()) {
+      WriteMotor((&At<LinearMotorLanes>(block, c.motor_offset))[i], s.motor[i],
+                 s.target_velocity[i], s.target_position[i], s.max_friction[i]);
+    }
+  }
+  WriteRotationDrives(c, block, {&s.motor[3], &s.motor[4], &s.motor[5]},
+                      {s.max_friction[3], s.max_friction[4], s.max_friction[5]},
+                      s.target_angular_velocity, s.target_orientation);
+}
+
 // Jolt's Vec3::GetNormalizedPerpendicular: (z, 0, -x) / |.| if |x| > |y|,
 // else (0, z, -y) / |.|.
 Vector NormalizedPerpendicular(const Vector& v) {
@@ -320,6 +385,12 @@ void WriteConstraint(const ConstraintPlan& c, const ConstraintSettings& settings
                          s.plane_half_cone_angle);
           WriteAxisLimit(lanes.limits.swing_z, c.swing_twist.swing_z, -s.normal_half_cone_angle,
                          s.normal_half_cone_angle);
+          WriteRotationDrives(c, block, {&s.twist_motor, &s.swing_motor, &s.swing_motor},
+                              {s.max_friction_torque, s.max_friction_torque,
+                               s.max_friction_torque},
+                              s.target_angular_velocity, s.target_orientation);
+        } else if constexpr (std::is_same_v<S, SixDofConstraintSettings>) {
+          WriteSixDof(c, s, frames, block);
         } else if constexpr (std::is_same_v<S, ConeConstraintSettings>) {
           auto& lanes = At<ConeConstraintLanes>(block, c.offset);
           Fill(lanes.anchors.r1_local, frames.Point1(s.point1));

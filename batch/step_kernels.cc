@@ -30,6 +30,7 @@
 #include "batch/point_constraint-inl.h"
 #include "batch/pulley_constraint-inl.h"
 #include "batch/slider_constraint-inl.h"
+#include "batch/six_dof_constraint-inl.h"
 #include "batch/swing_twist_constraint-inl.h"
 #include "hwy/highway.h"
 #include "kernels/integration-inl.h"
@@ -50,6 +51,7 @@ inline void SetupConstraint(const ConstraintBlock& c, const StepScalars& step) {
     case ConstraintType::kPulley: return PulleyConstraintSetup(c, step);
     case ConstraintType::kCone: return ConeConstraintSetup(c, step);
     case ConstraintType::kSwingTwist: return SwingTwistConstraintSetup(c, step);
+    case ConstraintType::kSixDof: return SixDofConstraintSetup(c, step);
   }
 }
 
@@ -65,6 +67,7 @@ inline void WarmStartConstraint(const ConstraintBlock& c, const StepScalars& ste
     case ConstraintType::kPulley: return PulleyConstraintWarmStart(c, step);
     case ConstraintType::kCone: return ConeConstraintWarmStart(c, step);
     case ConstraintType::kSwingTwist: return SwingTwistConstraintWarmStart(c, step);
+    case ConstraintType::kSixDof: return SixDofConstraintWarmStart(c, step);
   }
 }
 
@@ -80,6 +83,7 @@ inline bool SolveConstraintVelocity(const ConstraintBlock& c) {
     case ConstraintType::kPulley: return PulleyConstraintSolveVelocity(c);
     case ConstraintType::kCone: return ConeConstraintSolveVelocity(c);
     case ConstraintType::kSwingTwist: return SwingTwistConstraintSolveVelocity(c);
+    case ConstraintType::kSixDof: return SixDofConstraintSolveVelocity(c);
   }
   return false;
 }
@@ -98,6 +102,7 @@ inline bool SolveConstraintPosition(const StepPlan& plan, const ConstraintBlock&
     case ConstraintType::kPulley: return PulleyConstraintSolvePosition(c, step);
     case ConstraintType::kCone: return ConeConstraintSolvePosition(c, step);
     case ConstraintType::kSwingTwist: return SwingTwistConstraintSolvePosition(c, step);
+    case ConstraintType::kSixDof: return SixDofConstraintSolvePosition(c, step);
   }
   return false;
 }

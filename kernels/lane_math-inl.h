@@ -173,6 +173,24 @@ HWY_INLINE Quat Select(LaneMask mask, const Quat& yes, const Quat& no) {
 
 HWY_INLINE Quat IdentityQuat() { return {Zero(), Zero(), Zero(), Splat(1.0f)}; }
 
+HWY_INLINE LaneVec QuatDot(const Quat& a, const Quat& b) {
+  return hn::MulAdd(a.x, b.x, hn::MulAdd(a.y, b.y, hn::MulAdd(a.z, b.z, hn::Mul(a.w, b.w))));
+}
+
+// Jolt's Quat::GetTwist about the principal axis `axis` (0 = X, 1 = Y, 2 = Z):
+// the rotation about that axis in a swing-twist split of q, i.e. q's
+// component along the axis and w, normalised; the identity where both are 0.
+HWY_INLINE Quat TwistAboutAxis(const Quat& q, int axis) {
+  const LaneVec along = axis == 0 ? q.x : axis == 1 ? q.y : q.z;
+  const LaneVec length_squared = hn::MulAdd(along, along, hn::Mul(q.w, q.w));
+  const LaneMask regular = hn::Ne(length_squared, Zero());
+  const LaneVec inv_length =
+      hn::Div(Splat(1.0f), hn::Sqrt(hn::IfThenElse(regular, length_squared, Splat(1.0f))));
+  const LaneVec a = hn::IfThenElse(regular, hn::Mul(along, inv_length), Zero());
+  const LaneVec w = hn::IfThenElse(regular, hn::Mul(q.w, inv_length), Splat(1.0f));
+  return {axis == 0 ? a : Zero(), axis == 1 ? a : Zero(), axis == 2 ? a : Zero(), w};
+}
+
 // Rotates v by the unit quaternion q: v + 2w(u x v) + 2u x (u x v), u = q.xyz.
 HWY_INLINE Vec3 Rotate(const Quat& q, const Vec3& v) {
   const Vec3 u{q.x, q.y, q.z};

@@ -30,6 +30,8 @@ struct LaneMathKernels {
   void (*atan)(const LaneArray& x, LaneArray& angle);
   void (*atan2)(const LaneArray& y, const LaneArray& x, LaneArray& angle);
   void (*center_angle_around_zero)(const LaneArray& x, LaneArray& centered);
+  // Jolt's GetTwist about principal axis 0, 1 or 2 (swing-twist and six-DOF drives).
+  void (*twist_about_axis)(const QuatLanes& q, int axis, QuatLanes& twist);
 };
 
 MANYWORLDS_DECLARE_KERNEL_TABLE(LaneMathKernels)

@@ -64,6 +64,12 @@ void MathQuatNormalize(const QuatLanes& q, QuatLanes& normalized) {
   });
 }
 
+void MathTwistAboutAxis(const QuatLanes& q, int axis, QuatLanes& twist) {
+  ForEachChunk([&](std::size_t offset) {
+    StoreQuat(TwistAboutAxis(LoadQuat(q, offset), axis), twist, offset);
+  });
+}
+
 void MathQuatFromAxisAngle(const Vec3Lanes& unit_axis, const LaneArray& angle,
                            QuatLanes& q) {
   ForEachChunk([&](std::size_t offset) {
@@ -150,7 +156,7 @@ const LaneMathKernels* GetLaneMathKernels() {
       &MathWorldInverseInertia, &MathInverseInertiaTimes,
       &MathInverseSym22,        &MathInverse33,
       &MathAtan,                &MathAtan2,
-      &MathCenterAngleAroundZero,
+      &MathCenterAngleAroundZero, &MathTwistAboutAxis,
   };
   return &kTable;
 }

@@ -1,6 +1,8 @@
 // Swing-twist constraint of the reference world (spec 3, SwingTwist), the
-// ragdoll joint, without motors: a SwingTwistPart (spec 2.12) on the rotation
-// of body 2's constraint frame relative to body 1's, then a PointPart (2.4).
+// ragdoll joint: rotation drives (reference/rotation_drive.h: twist motor about
+// X, swing motors about Y and Z, or friction), a SwingTwistPart (spec 2.12) on
+// the rotation of body 2's constraint frame relative to body 1's, then a
+// PointPart (2.4).
 //
 // Constraint frame per body: X = twist axis, Y = plane × twist, Z = plane
 // axis; c_i = that frame as a rotation into body i's space (local settings,
@@ -8,11 +10,12 @@
 // [twist_min, twist_max], swing Y ±plane_half_cone, swing Z ±normal_half_cone,
 // cone or pyramid.
 //
-// Setup:    Point; q = (q1·c1)*·(q2·c2); SwingTwistPart(q, q1·c1).
-// Velocity: swing Y, swing Z, twist (active rows), then point.
+// Setup:    Point; q = (q1·c1)*·(q2·c2); SwingTwistPart(q, q1·c1); drives.
+// Velocity: twist drive, swing drives, swing Y, swing Z, twist limits (active
+//           rows), then point.
 // Position: SwingTwistPart (one rotation-Euler step towards the clamped
 //           orientation where violated), then the point part recomputed and
-//           stepped.
+//           stepped. Drives take no position steps.
 #pragma once
 
 #include <cstddef>
@@ -21,6 +24,7 @@
 #include "reference/body.h"
 #include "reference/math.h"
 #include "reference/point_part.h"
+#include "reference/rotation_drive.h"
 #include "reference/swing_twist_part.h"
 #include "reference/world_setup.h"
 
@@ -31,7 +35,15 @@ class SwingTwistConstraint {
  public:
   SwingTwistConstraint(const SwingTwistConstraintSettings& settings, const Body<T>& body1,
                        const Body<T>& body2)
-      : body1_(settings.body1), body2_(settings.body2) {
+      : body1_(settings.body1),
+        body2_(settings.body2),
+        drive_({MakeRotationDriveAxis<T>(settings.twist_motor_state, settings.twist_motor,
+                                         settings.max_friction_torque),
+                MakeRotationDriveAxis<T>(settings.swing_motor_state, settings.swing_motor,
+                                         settings.max_friction_torque),
+                MakeRotationDriveAxis<T>(settings.swing_motor_state, settings.swing_motor,
+                                         settings.max_friction_torque)},
+               /*project=*/false) {
     const ConstraintBodies<T> bodies{body1, body2, settings.space};
     local_point1_ = bodies.LocalPoint1(settings.point1);
     local_point2_ = bodies.LocalPoint2(settings.point2);
@@ -45,25 +57,38 @@ class SwingTwistConstraint {
     part_.SetLimits(T(settings.twist_min_angle), T(settings.twist_max_angle),
                     -T(settings.plane_half_cone_angle), T(settings.plane_half_cone_angle),
                     -T(settings.normal_half_cone_angle), T(settings.normal_half_cone_angle));
+    drive_.SetTargetAngularVelocity(ToVec3<T>(settings.target_angular_velocity));
+    SetTargetOrientation(ToQuat<T>(settings.target_orientation).normalized());
   }
+
+  // Body 2's frame in body 1's; clamped into the limits.
+  void SetTargetOrientation(const Quat<T>& target) { drive_.SetTargetOrientation(target, part_); }
+  void SetTargetAngularVelocity(const Vec3<T>& w) { drive_.SetTargetAngularVelocity(w); }
 
   std::size_t body1() const { return body1_; }
   std::size_t body2() const { return body2_; }
 
-  void SetupVelocityConstraint(const Body<T>& body1, const Body<T>& body2, T /*dt*/) {
+  void SetupVelocityConstraint(const Body<T>& body1, const Body<T>& body2, T dt) {
     point_.CalculateConstraintProperties(body1, local_point1_, body2, local_point2_);
-    part_.CalculateConstraintProperties(body1, body2, Rotation(body1, body2),
+    const Quat<T> q = Rotation(body1, body2);
+    part_.CalculateConstraintProperties(body1, body2, q,
                                         Quat<T>(body1.rotation * constraint_to_body1_));
+    if (drive_.InUse()) {
+      drive_.CalculateConstraintProperties(body1, body2, q,
+                                           Quat<T>(body2.rotation * constraint_to_body2_), dt);
+    }
   }
 
   void WarmStartVelocityConstraint(Body<T>& body1, Body<T>& body2, T warm_start_ratio) {
+    if (drive_.InUse()) drive_.WarmStart(body1, body2, warm_start_ratio);
     part_.WarmStart(body1, body2, warm_start_ratio);
     point_.WarmStart(body1, body2, warm_start_ratio);
   }
 
-  bool SolveVelocityConstraint(Body<T>& body1, Body<T>& body2, T /*dt*/) {
+  bool SolveVelocityConstraint(Body<T>& body1, Body<T>& body2, T dt) {
+    const bool drives = drive_.InUse() && drive_.SolveVelocityConstraint(body1, body2, dt);
     const bool limits = part_.SolveVelocityConstraint(body1, body2);
-    return point_.SolveVelocityConstraint(body1, body2) || limits;
+    return point_.SolveVelocityConstraint(body1, body2) || limits || drives;
   }
 
   bool SolvePositionConstraint(Body<T>& body1, Body<T>& body2, T /*dt*/, T baumgarte) {
@@ -92,6 +117,7 @@ class SwingTwistConstraint {
   Quat<T> constraint_to_body2_ = Quat<T>::Identity();
   SwingTwistPart<T> part_;
   PointPart<T> point_;
+  RotationDrive<T> drive_;
 };
 
 }  // namespace manyworlds::reference

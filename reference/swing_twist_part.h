@@ -116,12 +116,20 @@ class SwingTwistPart {
   void SetSwingType(SwingType type) { swing_type_ = type; }
   SwingType GetSwingType() const { return swing_type_; }
 
-  // Angles in radians; min <= max; swing limits within [−π, π].
+  // Angles in radians; min <= max; swing limits within [−π, π]. Scenes give
+  // float angles, and float π lies above π in double: such limits are taken
+  // as ±π (both are "free" by the ±179.5° rule).
   void SetLimits(T twist_min, T twist_max, T swing_y_min, T swing_y_max, T swing_z_min,
                  T swing_z_max) {
     assert(twist_min <= twist_max && swing_y_min <= swing_y_max && swing_z_min <= swing_z_max);
-    assert(swing_y_min >= -std::numbers::pi_v<T> && swing_y_max <= std::numbers::pi_v<T>);
-    assert(swing_z_min >= -std::numbers::pi_v<T> && swing_z_max <= std::numbers::pi_v<T>);
+    [[maybe_unused]] constexpr T kFloatPi = T(3.14159265358979323846f);
+    assert(swing_y_min >= -kFloatPi && swing_y_max <= kFloatPi);
+    assert(swing_z_min >= -kFloatPi && swing_z_max <= kFloatPi);
+    const auto within_pi = [](T angle) {
+      return std::clamp(angle, -std::numbers::pi_v<T>, std::numbers::pi_v<T>);
+    };
+    swing_y_min = within_pi(swing_y_min), swing_y_max = within_pi(swing_y_max);
+    swing_z_min = within_pi(swing_z_min), swing_z_max = within_pi(swing_z_max);
     twist_ = MakeAxisLimit(twist_min, twist_max);
     swing_y_ = MakeAxisLimit(swing_y_min, swing_y_max);
     swing_z_ = MakeAxisLimit(swing_z_min, swing_z_max);

@@ -55,6 +55,7 @@
 #include "reference/pulley_constraint.h"
 #include "reference/rack_and_pinion_constraint.h"
 #include "reference/slider_constraint.h"
+#include "reference/six_dof_constraint.h"
 #include "reference/swing_twist_constraint.h"
 #include "reference/world_setup.h"
 
@@ -68,7 +69,7 @@ class World {
       std::variant<PointConstraint<T>, FixedConstraint<T>, HingeConstraint<T>,
                    SliderConstraint<T>, GearConstraint<T>, RackAndPinionConstraint<T>,
                    DistanceConstraint<T>, PulleyConstraint<T>, ConeConstraint<T>,
-                   SwingTwistConstraint<T>>;
+                   SwingTwistConstraint<T>, SixDofConstraint<T>>;
 
   // Converts every body and constraint (world-space settings refer to the poses
   // in the scene). Throws std::invalid_argument for body or helper indices that do
@@ -132,6 +133,34 @@ class World {
     }
   }
 
+  // Swing-twist and six-DOF rotation drives: body 2's frame in body 1's
+  // (clamped into the limits) and the angular velocity about body 2's frame axes.
+  void SetTargetOrientation(std::size_t constraint, const Quat<T>& orientation) {
+    if (auto* c = std::get_if<SwingTwistConstraint<T>>(&constraints_.at(constraint))) {
+      c->SetTargetOrientation(orientation.normalized());
+    } else if (auto* d = std::get_if<SixDofConstraint<T>>(&constraints_.at(constraint))) {
+      d->SetTargetOrientation(orientation.normalized());
+    } else {
+      throw std::invalid_argument(NotA("swing-twist or six-DOF", constraint));
+    }
+  }
+  void SetTargetAngularVelocity(std::size_t constraint, const Vec3<T>& angular_velocity) {
+    if (auto* c = std::get_if<SwingTwistConstraint<T>>(&constraints_.at(constraint))) {
+      c->SetTargetAngularVelocity(angular_velocity);
+    } else if (auto* d = std::get_if<SixDofConstraint<T>>(&constraints_.at(constraint))) {
+      d->SetTargetAngularVelocity(angular_velocity);
+    } else {
+      throw std::invalid_argument(NotA("swing-twist or six-DOF", constraint));
+    }
+  }
+  // Six-DOF translation drives, body 1's constraint frame.
+  void SetTargetTranslation(std::size_t constraint, const Vec3<T>& translation) {
+    SixDof(constraint).SetTargetTranslation(translation);
+  }
+  void SetTargetLinearVelocity(std::size_t constraint, const Vec3<T>& velocity) {
+    SixDof(constraint).SetTargetLinearVelocity(velocity);
+  }
+
   // ---- state
   const Body<T>& body(std::size_t i) const { return bodies_.at(i); }
   Body<T>& body(std::size_t i) { return bodies_.at(i); }  // to set state
@@ -153,6 +182,12 @@ class World {
   }
 
  private:
+  SixDofConstraint<T>& SixDof(std::size_t constraint) {
+    auto* c = std::get_if<SixDofConstraint<T>>(&constraints_.at(constraint));
+    if (c == nullptr) throw std::invalid_argument(NotA("six-DOF", constraint));
+    return *c;
+  }
+
   static std::string NotA(const char* what, std::size_t constraint) {
     return "reference::World: constraint " + std::to_string(constraint) + " is not a " + what;
   }
@@ -178,6 +213,8 @@ class World {
       return ConeConstraint<T>(settings, body1, body2);
     } else if constexpr (std::is_same_v<Settings, SwingTwistConstraintSettings>) {
       return SwingTwistConstraint<T>(settings, body1, body2);
+    } else if constexpr (std::is_same_v<Settings, SixDofConstraintSettings>) {
+      return SixDofConstraint<T>(settings, body1, body2);
     } else {
       // Gear and rack-and-pinion read both bodies' motion properties (spec 1.5).
       if (body1.IsStatic() || body2.IsStatic()) {

@@ -245,7 +245,70 @@ INSTANTIATE_TEST_SUITE_P(
                      {"'hip'", "twist_axis2", "plane_axis2"}},
         BadSceneCase{"NonFiniteLimitsSpring",
                      [](Scene& s) { Hinge(s).limits_spring.damping = INFINITY; },
-                     {"'elbow'", "limits_spring"}}),
+                     {"'elbow'", "limits_spring"}},
+        BadSceneCase{"SwingTwistPositionMotorWithoutSpring",
+                     [](Scene& s) {
+                       SwingTwistConstraintSettings joint;
+                       joint.name = "hip";
+                       joint.body1 = 0;
+                       joint.body2 = 1;
+                       joint.swing_motor_state = MotorState::kPosition;
+                       joint.swing_motor.spring.frequency_or_stiffness = 0;
+                       s.AddConstraint(joint);
+                     },
+                     {"'hip'", "swing_motor.spring"}},
+        BadSceneCase{"SwingTwistZeroTargetOrientation",
+                     [](Scene& s) {
+                       SwingTwistConstraintSettings joint;
+                       joint.name = "hip";
+                       joint.body1 = 0;
+                       joint.body2 = 1;
+                       joint.target_orientation = {0, 0, 0, 0};
+                       s.AddConstraint(joint);
+                     },
+                     {"'hip'", "target_orientation"}},
+        BadSceneCase{"SixDofNanLimit",
+                     [](Scene& s) {
+                       SixDofConstraintSettings joint;
+                       joint.name = "mount";
+                       joint.body1 = 0;
+                       joint.body2 = 1;
+                       joint.limit_max[4] = NAN;
+                       s.AddConstraint(joint);
+                     },
+                     {"'mount'", "limit_max[4]"}},
+        BadSceneCase{"SixDofAxesNotPerpendicular",
+                     [](Scene& s) {
+                       SixDofConstraintSettings joint;
+                       joint.name = "mount";
+                       joint.body1 = 0;
+                       joint.body2 = 1;
+                       joint.axis_y2 = {1, 1, 0};
+                       s.AddConstraint(joint);
+                     },
+                     {"'mount'", "axis_x2", "axis_y2"}},
+        BadSceneCase{"SixDofNegativeFriction",
+                     [](Scene& s) {
+                       SixDofConstraintSettings joint;
+                       joint.name = "mount";
+                       joint.body1 = 0;
+                       joint.body2 = 1;
+                       joint.max_friction[2] = -1;
+                       s.AddConstraint(joint);
+                     },
+                     {"'mount'", "max_friction[2]"}},
+        BadSceneCase{"SixDofMotorLimitsInverted",
+                     [](Scene& s) {
+                       SixDofConstraintSettings joint;
+                       joint.name = "mount";
+                       joint.body1 = 0;
+                       joint.body2 = 1;
+                       joint.motor_state[5] = MotorState::kVelocity;
+                       joint.motor[5].min_force_limit = 1;
+                       joint.motor[5].max_force_limit = -1;
+                       s.AddConstraint(joint);
+                     },
+                     {"'mount'", "motor[5].min_force_limit"}}),
     [](const auto& info) { return info.param.name; });
 
 // The ragdoll under random elbow and knee targets every step for 10 s: every
@@ -276,6 +339,41 @@ TEST(ScenesTest, RagdollStaysAssembledForTenSeconds) {
 // only, max(2, min = 1) = 2 (error 0). A wrong resolution (e.g. leaving -1
 // in place, or min > max) shows up as a different constraint error; the
 // reference resolves them independently and must agree.
+// Drives of swing-twist and six-DOF constraints are set per axis: the
+// single-value hinge / slider setters refuse them naming the right ones, and a
+// zero target orientation is refused before anything is written.
+TEST(BatchTest, MultiAxisDrivesAreSetPerAxis) {
+  Scene scene = HingeScene();
+  SwingTwistConstraintSettings joint;
+  joint.name = "hip";
+  joint.body1 = 0;
+  joint.body2 = 1;
+  joint.twist_motor_state = MotorState::kVelocity;
+  const std::size_t hip = scene.AddConstraint(joint);
+  SixDofConstraintSettings mount;
+  mount.name = "mount";
+  mount.body1 = 0;
+  mount.body2 = 1;
+  mount.motor_state[0] = MotorState::kVelocity;
+  const std::size_t six_dof = scene.AddConstraint(mount);
+  Batch batch(scene, 4);
+  for (const std::size_t c : {hip, six_dof}) {
+    try {
+      batch.SetTargetPosition(0, c, 0.1f);
+      ADD_FAILURE() << "SetTargetPosition accepted constraint " << c;
+    } catch (const SceneError& error) {
+      EXPECT_THAT(error.what(), HasSubstr("SetTargetOrientation"));
+    }
+  }
+  EXPECT_THROW(batch.SetTargetOrientation(0, hip, {0, 0, 0, 0}), SceneError);
+  EXPECT_THROW(batch.SetTargetTranslation(0, hip, {0, 0, 0}), SceneError);  // not a six-DOF
+  EXPECT_THROW(batch.SetTargetAngularVelocity(0, six_dof, {1, 0, 0}), SceneError);  // no drive
+  batch.SetTargetAngularVelocity(1, hip, {1, 0, 0});
+  batch.SetTargetLinearVelocity(2, six_dof, {0.5f, 0, 0});
+  batch.Step(StepSettings{});
+  EXPECT_EQ(batch.UnhealthyWorldCount(), 0u);
+}
+
 TEST(BatchTest, DistanceBoundsDefaultToTheInitialLength) {
   struct Case {
     float min, max;

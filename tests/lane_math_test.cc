@@ -257,6 +257,35 @@ TEST_P(LaneMathTest, QuatNormalizeMatchesEigen) {
   }
 }
 
+// The twist about X, Y or Z against reference/math.h's QuatTwist in double,
+// on random unit quaternions and, in some lanes, on quaternions with no
+// component about the axis and w = 0 (a half turn about a perpendicular
+// axis), where both give the identity.
+TEST_P(LaneMathTest, TwistAboutAxisMatchesReference) {
+  Random random(606);
+  for (int axis = 0; axis < 3; ++axis) {
+    for (std::size_t block = 0; block < kBlocks; ++block) {
+      QuatLanes q, twist;
+      for (std::size_t lane = 0; lane < kLaneWidth; ++lane) {
+        Quatd value = FloatUnitQuat(random);
+        if (lane % 5 == 4) {  // no twist at all: identity
+          value.w() = 0;
+          value.coeffs()[axis] = 0;
+          value.normalize();
+        }
+        SetLaneQuat(q, lane, value);
+      }
+      Kernels().twist_about_axis(q, axis, twist);
+      for (std::size_t lane = 0; lane < kLaneWidth; ++lane) {
+        const Quatd expected = reference::QuatTwist(LaneQuat(q, lane), Vec3d(Vec3d::Unit(axis)));
+        // Scale 1: a normalised 2-component quaternion, a few roundings.
+        ExpectQuatNear(LaneQuat(twist, lane), expected, Tolerance(1.0),
+                       LaneLabel("twist about axis " + std::to_string(axis), block, lane));
+      }
+    }
+  }
+}
+
 TEST_P(LaneMathTest, QuatFromAxisAngleMatchesReference) {
   Random random(505);
   for (std::size_t block = 0; block < kBlocks; ++block) {

@@ -339,6 +339,103 @@ Scene MoreTypesScene() {
   knee.twist_min_angle = -kPi;        // free twist
   knee.twist_max_angle = kPi;
   scene.AddConstraint(knee);
+
+  // Swing-twist drives on a third limb: a torque-limited velocity motor on
+  // the (free) twist and a position motor on the (free) swing towards a
+  // target orientation; drives are equality rows (a clamped impulse is a
+  // continuous function of the velocity, unlike a limit switching on).
+  const std::size_t hand = body("hand", MotionType::kDynamic, {1.0f, -0.6f, 0.5f}, 0.6f,
+                                {0.02f, 0.005f, 0.02f}, {0.2f, -0.4f, 0.1f});
+  SwingTwistConstraintSettings wrist;
+  wrist.name = "wrist";
+  wrist.body1 = lower;
+  wrist.body2 = hand;
+  wrist.point1 = wrist.point2 = {1.0f, -0.2f, 0.5f};
+  wrist.twist_axis1 = wrist.twist_axis2 = {0.0f, -1.0f, 0.0f};
+  wrist.plane_axis1 = wrist.plane_axis2 = {0.0f, 0.0f, 1.0f};
+  wrist.normal_half_cone_angle = wrist.plane_half_cone_angle = kPi;
+  wrist.twist_min_angle = -kPi;
+  wrist.twist_max_angle = kPi;
+  wrist.twist_motor_state = MotorState::kVelocity;
+  wrist.target_angular_velocity = {1.5f, 0.0f, 0.0f};
+  wrist.twist_motor.min_force_limit = -0.05f;
+  wrist.twist_motor.max_force_limit = 0.05f;
+  wrist.swing_motor_state = MotorState::kPosition;
+  wrist.swing_motor.spring.frequency_or_stiffness = 3.0f;
+  wrist.target_orientation = {0.0f, 0.2f, 0.1f, 0.97f};
+  scene.AddConstraint(wrist);
+
+  // Six-DOF: a carriage free along X with a force-limited velocity motor, Y
+  // fixed through a spring, Z fixed hard; twist free with a position motor,
+  // swing locked (swing-twist part with equality rows only).
+  const std::size_t carriage = body("carriage", MotionType::kDynamic, {-0.5f, 1.2f, -0.4f}, 2.0f,
+                                    {0.05f, 0.07f, 0.06f}, {0.1f, 0.2f, 0});
+  SixDofConstraintSettings rail;
+  rail.name = "rail";
+  rail.body1 = ground;
+  rail.body2 = carriage;
+  rail.position1 = rail.position2 = {-0.5f, 1.2f, -0.4f};
+  rail.axis_x1 = rail.axis_x2 = {0.8f, 0.0f, 0.6f};
+  rail.axis_y1 = rail.axis_y2 = {0.0f, 1.0f, 0.0f};
+  rail.MakeFixedAxis(SixDofAxis::kTranslationY);
+  rail.limits_spring[1].frequency_or_stiffness = 2.5f;
+  rail.limits_spring[1].damping = 0.3f;
+  rail.MakeFixedAxis(SixDofAxis::kTranslationZ);
+  rail.MakeFixedAxis(SixDofAxis::kRotationY);
+  rail.MakeFixedAxis(SixDofAxis::kRotationZ);
+  rail.motor_state[0] = MotorState::kVelocity;
+  rail.target_velocity = {0.7f, 0.0f, 0.0f};
+  rail.motor[0].min_force_limit = -3.0f;
+  rail.motor[0].max_force_limit = 3.0f;
+  rail.motor_state[3] = MotorState::kPosition;
+  rail.target_orientation = {0.3f, 0.0f, 0.0f, 0.95f};
+  scene.AddConstraint(rail);
+
+  // Six-DOF with every axis fixed, at an offset: the point shortcut on an
+  // anchor moved by c1 min and the rotation-Euler shortcut towards
+  // c2 (c1 euler(min))*, between two dynamic bodies (local frames, turned
+  // away from the bodies' axes; the weld starts 0.37 rad and ~0.1 m from
+  // rest). The driven carriage under this weld has rare steps where a
+  // world's rounding is amplified ~1e5-fold, in the float reference as in
+  // the batch (printed when debugging: the same steps and worlds in both,
+  // sometimes one larger, sometimes the other). With frames that differ
+  // between the bodies (a 120 degree start) one such step put the batch 2.3x
+  // beyond the per-body bound while the float reference led at others; the
+  // equal frames here stay within it on every target.
+  const std::size_t cargo = body("cargo", MotionType::kDynamic, {-0.3f, 1.6f, -0.2f}, 0.9f,
+                                 {0.02f, 0.03f, 0.02f}, {0, 0, 0.3f});
+  SixDofConstraintSettings weld;
+  weld.name = "offset weld";
+  weld.body1 = carriage;
+  weld.body2 = cargo;
+  weld.space = ConstraintSpace::kLocalToBodyCOM;
+  weld.position1 = {0.1f, 0.3f, 0.1f};
+  weld.position2 = {-0.1f, -0.1f, 0.0f};
+  weld.axis_x1 = weld.axis_x2 = {0.0f, 0.0f, 1.0f};
+  weld.axis_y1 = weld.axis_y2 = {1.0f, 0.0f, 0.0f};
+  for (std::size_t i = 0; i < kSixDofAxes; ++i) {
+    weld.limit_min[i] = weld.limit_max[i] = i < 3 ? 0.05f * float(i + 1) : 0.1f * float(i - 2);
+  }
+  scene.AddConstraint(weld);
+
+  // Six-DOF gimbal: translation fixed (the point shortcut), rotation free
+  // with position drives about X and Y only, so the orientation error is
+  // projected onto those two axes (the twist about Z removed), and friction
+  // about Z. (A reference that forgot the projection failed this scene by
+  // 1e5 FLT_EPSILON.)
+  const std::size_t gimbal = body("gimbal", MotionType::kDynamic, {0.6f, 1.8f, 0.9f}, 0.7f,
+                                  {0.01f, 0.02f, 0.015f}, {0.1f, 0, 0});
+  SixDofConstraintSettings mount;
+  mount.name = "gimbal mount";
+  mount.body1 = ground;
+  mount.body2 = gimbal;
+  mount.position1 = mount.position2 = {0.6f, 2.0f, 0.9f};
+  for (std::size_t i = 0; i < 3; ++i) mount.MakeFixedAxis(SixDofAxis(i));
+  mount.motor_state[3] = mount.motor_state[4] = MotorState::kPosition;
+  mount.motor[4].spring = {SpringMode::kStiffnessAndDamping, 0.8f, 0.05f};
+  mount.max_friction[5] = 0.02f;
+  mount.target_orientation = {0.2f, -0.1f, 0.3f, 0.93f};
+  scene.AddConstraint(mount);
   return scene;
 }
 

@@ -59,6 +59,12 @@ class Stepper {
   virtual void SetTorque(std::size_t body, const Vec3d& torque) = 0;
   virtual void SetTargetVelocity(std::size_t constraint, double velocity) = 0;
   virtual void SetTargetPosition(std::size_t constraint, double position) = 0;
+  // Swing-twist and six-DOF drives (body 2's frame in body 1's; rad/s about
+  // body 2's frame axes) and six-DOF translation drives (body 1's frame).
+  virtual void SetTargetOrientation(std::size_t constraint, const Quatd& orientation) = 0;
+  virtual void SetTargetAngularVelocity(std::size_t constraint, const Vec3d& velocity) = 0;
+  virtual void SetTargetTranslation(std::size_t constraint, const Vec3d& translation) = 0;
+  virtual void SetTargetLinearVelocity(std::size_t constraint, const Vec3d& velocity) = 0;
 
   // ---- the reference's measurements of a hinge or slider
   virtual double HingeAngle(std::size_t constraint) const = 0;
@@ -108,6 +114,18 @@ class ReferenceStepper final : public Stepper {
   }
   void SetTargetPosition(std::size_t constraint, double position) override {
     world_.SetTargetPosition(constraint, T(position));
+  }
+  void SetTargetOrientation(std::size_t constraint, const Quatd& orientation) override {
+    world_.SetTargetOrientation(constraint, orientation.cast<T>());
+  }
+  void SetTargetAngularVelocity(std::size_t constraint, const Vec3d& velocity) override {
+    world_.SetTargetAngularVelocity(constraint, velocity.cast<T>());
+  }
+  void SetTargetTranslation(std::size_t constraint, const Vec3d& translation) override {
+    world_.SetTargetTranslation(constraint, translation.cast<T>());
+  }
+  void SetTargetLinearVelocity(std::size_t constraint, const Vec3d& velocity) override {
+    world_.SetTargetLinearVelocity(constraint, velocity.cast<T>());
   }
 
   double HingeAngle(std::size_t constraint) const override {
@@ -177,6 +195,27 @@ class BatchStepper final : public Stepper {
   void SetTargetPosition(std::size_t constraint, double position) override {
     for (std::size_t w = 0; w < batch_.world_count(); ++w) {
       batch_.SetTargetPosition(w, constraint, float(position));
+    }
+  }
+  void SetTargetOrientation(std::size_t constraint, const Quatd& q) override {
+    const Quaternion target{float(q.x()), float(q.y()), float(q.z()), float(q.w())};
+    for (std::size_t w = 0; w < batch_.world_count(); ++w) {
+      batch_.SetTargetOrientation(w, constraint, target);
+    }
+  }
+  void SetTargetAngularVelocity(std::size_t constraint, const Vec3d& velocity) override {
+    for (std::size_t w = 0; w < batch_.world_count(); ++w) {
+      batch_.SetTargetAngularVelocity(w, constraint, ToFloat3(velocity));
+    }
+  }
+  void SetTargetTranslation(std::size_t constraint, const Vec3d& translation) override {
+    for (std::size_t w = 0; w < batch_.world_count(); ++w) {
+      batch_.SetTargetTranslation(w, constraint, ToFloat3(translation));
+    }
+  }
+  void SetTargetLinearVelocity(std::size_t constraint, const Vec3d& velocity) override {
+    for (std::size_t w = 0; w < batch_.world_count(); ++w) {
+      batch_.SetTargetLinearVelocity(w, constraint, ToFloat3(velocity));
     }
   }
 

@@ -13,6 +13,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <initializer_list>
+#include <memory>
 #include <vector>
 
 #include "manyworlds/batch.h"
@@ -184,6 +186,55 @@ TEST(VelocityResidual, HingeAllowsOnlyRotationAboutItsAxis) {
   // anchor's 0.4975 m/s).
   world.Set(kPole, pole_com, AboutAxis(2, 0.1), {0, 0, 0}, {1, 0, 0});
   EXPECT_NEAR(world.batch().ConstraintVelocityError(0, kPoleHinge), 1.0, kTolerance);
+}
+
+// A dynamic body at (0, 1, 0) held to the static world by a six-DOF joint at
+// its centre of mass, with the given axes fixed (the others free).
+class SixDofWorld {
+ public:
+  explicit SixDofWorld(std::initializer_list<SixDofAxis> fixed) {
+    Scene scene;
+    BodySettings ground;
+    ground.motion_type = MotionType::kStatic;
+    scene.AddBody(ground);
+    BodySettings body;
+    body.position = {0, 1, 0};
+    scene.AddBody(body);
+    SixDofConstraintSettings joint;
+    joint.body1 = 0;
+    joint.body2 = 1;
+    joint.position1 = joint.position2 = {0, 1, 0};
+    for (SixDofAxis axis : fixed) joint.MakeFixedAxis(axis);
+    scene.AddConstraint(joint);
+    batch_ = std::make_unique<Batch>(scene, 1);
+  }
+  // The joint's velocity residual with the body at rest in its initial pose
+  // but for velocities v and w.
+  double Residual(Float3 v, Float3 w) {
+    std::vector<float> state = BodyState({0, 0, 0}, {0, 0, 0, 1}, {0, 0, 0}, {0, 0, 0});
+    const std::vector<float> body = BodyState({0, 1, 0}, {0, 0, 0, 1}, v, w);
+    state.insert(state.end(), body.begin(), body.end());
+    batch_->SetState(state);
+    return batch_->ConstraintVelocityError(0, 0);
+  }
+
+ private:
+  std::unique_ptr<Batch> batch_;
+};
+
+TEST(VelocityResidual, SixDofCountsOnlyItsFixedAxes) {
+  using enum SixDofAxis;
+  // Every translation fixed: the anchor's velocity, 1 m/s; spinning about
+  // the anchor (the COM) is free.
+  SixDofWorld point({kTranslationX, kTranslationY, kTranslationZ});
+  EXPECT_NEAR(point.Residual({0, 1, 0}, {0, 0, 5}), 1.0, kTolerance);
+  // X free, Y and Z fixed: sliding along X is allowed, 0.5 m/s along Y not.
+  SixDofWorld slider({kTranslationY, kTranslationZ});
+  EXPECT_NEAR(slider.Residual({2, 0, 0}, {0, 0, 0}), 0.0, kTolerance);
+  EXPECT_NEAR(slider.Residual({2, 0.5f, 0}, {0, 0, 0}), 0.5, kTolerance);
+  // Every rotation fixed, translations free: 3 rad/s of spin.
+  SixDofWorld no_rotation({kRotationX, kRotationY, kRotationZ});
+  EXPECT_NEAR(no_rotation.Residual({4, 0, 0}, {0, 0, 3}), 3.0, kTolerance);
 }
 
 TEST(Sweep, SceneListStartsWithTheReferenceScenes) {

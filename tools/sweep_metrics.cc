@@ -78,8 +78,20 @@ bool EnergyIsConserved(const Scene& scene, const SceneActions& actions) {
                    !c.limits_spring.HasStiffnessOrDamping();
           } else if constexpr (std::is_same_v<Type, DistanceConstraintSettings>) {
             return !c.limits_spring.HasStiffnessOrDamping();
+          } else if constexpr (std::is_same_v<Type, SwingTwistConstraintSettings>) {
+            return c.swing_motor_state == MotorState::kOff &&
+                   c.twist_motor_state == MotorState::kOff && c.max_friction_torque == 0.0f;
+          } else if constexpr (std::is_same_v<Type, SixDofConstraintSettings>) {
+            const auto off = [](MotorState state) { return state == MotorState::kOff; };
+            const auto zero = [](float friction) { return friction == 0.0f; };
+            const auto no_spring = [](const SpringSettings& spring) {
+              return !spring.HasStiffnessOrDamping();
+            };
+            return std::all_of(c.motor_state.begin(), c.motor_state.end(), off) &&
+                   std::all_of(c.max_friction.begin(), c.max_friction.end(), zero) &&
+                   std::all_of(c.limits_spring.begin(), c.limits_spring.end(), no_spring);
           } else {
-            return true;  // no motors, friction or springs on the other types
+            return true;  // point, fixed, gear, rack, pulley, cone: no motors, friction or springs
           }
         },
         constraint);

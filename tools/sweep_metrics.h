@@ -25,8 +25,9 @@ double MechanicalEnergy(const Scene& scene, std::span<const float> world_state, 
 
 // Whether the scene's mechanical energy is a conserved quantity of the exact
 // dynamics, so its drift measures the solver: no actions, no body damping,
-// no kinematic bodies, no motors or friction, no springs (their potential
-// energy is not counted). Of the reference scenes: the four chains.
+// no kinematic bodies, no motors or friction (hinge, slider, swing-twist,
+// six-DOF), no springs (their potential energy is not counted). Of the
+// reference scenes: the four chains.
 bool EnergyIsConserved(const Scene& scene, const SceneActions& actions);
 
 // The gear and rack-and-pinion constraints whose hinges (and slider) the scene

@@ -132,6 +132,17 @@ class Batch {
   void SetTargetPosition(std::size_t world, std::size_t constraint, float position);
   void SetTargetVelocities(std::size_t constraint, std::span<const float> per_world);
   void SetTargetPositions(std::size_t constraint, std::span<const float> per_world);
+  // Rotation drives of a swing-twist or six-DOF constraint: the orientation
+  // of body 2's constraint frame in body 1's (normalised here, clamped into
+  // the limits each step; a zero quaternion is refused) and the angular
+  // velocity about body 2's frame axes X, Y, Z (rad/s).
+  void SetTargetOrientation(std::size_t world, std::size_t constraint, Quaternion orientation);
+  void SetTargetAngularVelocity(std::size_t world, std::size_t constraint,
+                                Float3 angular_velocity);
+  // Translation drives of a six-DOF constraint, in body 1's constraint frame:
+  // the target displacement (m) and velocity (m/s) per axis.
+  void SetTargetTranslation(std::size_t world, std::size_t constraint, Float3 translation);
+  void SetTargetLinearVelocity(std::size_t world, std::size_t constraint, Float3 velocity);
 
   // ---- per-world parameters (domain randomisation); the scene's values are
   // the defaults, and a parameter nobody overrides costs nothing extra.

@@ -198,8 +198,15 @@ struct ConeConstraintSettings {
 // axis, Y = Z x X ("normal"); swing about Y is limited by
 // plane_half_cone_angle, about Z by normal_half_cone_angle, twist about X by
 // [twist_min_angle, twist_max_angle]. An axis is locked when its range is
-// within +-0.5 deg and free beyond +-179.5 deg (Jolt's rule). Swing and twist
-// motors and friction are not modelled yet.
+// within +-0.5 deg and free beyond +-179.5 deg (Jolt's rule).
+//
+// Motors act about the axes of body 2's constraint frame: the twist motor
+// about X, the swing motor about Y and Z together. A velocity motor drives
+// the relative angular velocity (body 2 - body 1) about those axes to
+// target_angular_velocity (components along X, Y, Z of body 2's frame); a
+// position motor drives body 2's frame towards target_orientation (body 2's
+// frame relative to body 1's), which is clamped into the limits first.
+// With a motor off and max_friction_torque > 0 that axis has friction.
 struct SwingTwistConstraintSettings {
   std::string name;
   std::size_t body1 = 0, body2 = 0;
@@ -215,6 +222,79 @@ struct SwingTwistConstraintSettings {
   float plane_half_cone_angle = 0.0f;   // rad, [0, pi]
   float twist_min_angle = 0.0f;         // rad, [-pi, pi]
   float twist_max_angle = 0.0f;         // rad, [-pi, pi]
+  float max_friction_torque = 0.0f;     // N m, on every axis whose motor is off
+  MotorSettings swing_motor;            // force limits are torque limits here
+  MotorSettings twist_motor;
+  MotorState swing_motor_state = MotorState::kOff;
+  MotorState twist_motor_state = MotorState::kOff;
+  Float3 target_angular_velocity{0, 0, 0};   // rad/s, about body 2's frame X, Y, Z
+  Quaternion target_orientation{0, 0, 0, 1};  // body 2's frame in body 1's
+};
+
+// The six degrees of freedom of a six-DOF constraint, in its constraint frame
+// (X, Y from the settings' axes, Z = X x Y).
+enum class SixDofAxis : std::uint8_t {
+  kTranslationX,
+  kTranslationY,
+  kTranslationZ,
+  kRotationX,  // twist
+  kRotationY,  // swing
+  kRotationZ,  // swing
+};
+inline constexpr std::size_t kSixDofAxes = 6;
+
+// The most general joint (spec 3, SixDOF): per axis of the constraint frame
+// (X = axis_x, Y = axis_y, Z = X x Y, body 1's for translation, body 2's for
+// the rotation motors) the axis is
+//   fixed    when limit_min >= limit_max (a translation with min > max, or an
+//            inverted rotation range, becomes 0 / 0),
+//   free     when limit_min <= -L and limit_max >= L (L = FLT_MAX for
+//            translation, pi for rotation; rotation limits are clamped into
+//            [-pi, pi]),
+//   limited  otherwise: the translation d = (p2 - p1) . axis within
+//            [min, max]; rotations as a swing-twist joint (X twist, Y and Z
+//            swing; a cone uses the symmetric range +-max(0, limit_max)).
+// Translation limits may be springs (limits_spring); each axis may have a
+// motor (targets in the constraint frame) or friction (max_friction, when its
+// motor is off). Jolt's shortcuts: all translations fixed without springs use
+// a point part, all rotations fixed a rotation-Euler part (the motors of those
+// axes are then not used).
+struct SixDofConstraintSettings {
+  std::string name;
+  std::size_t body1 = 0, body2 = 0;
+  ConstraintSpace space = ConstraintSpace::kWorldSpace;
+  Float3 position1{0, 0, 0};
+  Float3 axis_x1{1, 0, 0};
+  Float3 axis_y1{0, 1, 0};
+  Float3 position2{0, 0, 0};
+  Float3 axis_x2{1, 0, 0};
+  Float3 axis_y2{0, 1, 0};
+  SwingType swing_type = SwingType::kCone;
+  std::array<float, kSixDofAxes> limit_min{-FLT_MAX, -FLT_MAX, -FLT_MAX,
+                                           -FLT_MAX, -FLT_MAX, -FLT_MAX};
+  std::array<float, kSixDofAxes> limit_max{FLT_MAX, FLT_MAX, FLT_MAX,
+                                           FLT_MAX, FLT_MAX, FLT_MAX};
+  std::array<SpringSettings, 3> limits_spring{};         // translation axes only
+  std::array<float, kSixDofAxes> max_friction{};          // N (translation), N m (rotation)
+  std::array<MotorSettings, kSixDofAxes> motor{};
+  std::array<MotorState, kSixDofAxes> motor_state{};
+  Float3 target_velocity{0, 0, 0};           // m/s, body 1's frame
+  Float3 target_angular_velocity{0, 0, 0};   // rad/s, body 2's frame
+  Float3 target_position{0, 0, 0};           // m, body 1's frame
+  Quaternion target_orientation{0, 0, 0, 1};  // body 2's frame in body 1's, clamped
+
+  void MakeFixedAxis(SixDofAxis axis) {
+    limit_min[std::size_t(axis)] = FLT_MAX;
+    limit_max[std::size_t(axis)] = -FLT_MAX;
+  }
+  void MakeFreeAxis(SixDofAxis axis) {
+    limit_min[std::size_t(axis)] = -FLT_MAX;
+    limit_max[std::size_t(axis)] = FLT_MAX;
+  }
+  void SetLimitedAxis(SixDofAxis axis, float min, float max) {
+    limit_min[std::size_t(axis)] = min;
+    limit_max[std::size_t(axis)] = max;
+  }
 };
 
 // No constraint index: the gear / rack has no position correction.
@@ -251,7 +331,7 @@ using ConstraintSettings =
                  SliderConstraintSettings, GearConstraintSettings,
                  RackAndPinionConstraintSettings, DistanceConstraintSettings,
                  PulleyConstraintSettings, ConeConstraintSettings,
-                 SwingTwistConstraintSettings>;
+                 SwingTwistConstraintSettings, SixDofConstraintSettings>;
 
 // The world every batch copies. Constraints are solved in the order they were
 // added (Jolt's order for equal priorities).

@@ -155,7 +155,7 @@ void Common(FuzzedDataProvider& in, std::size_t bodies, Settings& c) {
 
 ConstraintSettings Constraint(FuzzedDataProvider& in, std::size_t bodies,
                               std::size_t constraints) {
-  switch (in.ConsumeIntegralInRange<int>(0, 9)) {
+  switch (in.ConsumeIntegralInRange<int>(0, 10)) {
     case 0: {
       PointConstraintSettings c;
       Common(in, bodies, c);
@@ -280,6 +280,44 @@ ConstraintSettings Constraint(FuzzedDataProvider& in, std::size_t bodies,
       c.plane_half_cone_angle = Float(in, 0, 3.3f);
       c.twist_min_angle = Float(in, -3.3f, 0.2f);
       c.twist_max_angle = Float(in, -0.2f, 3.3f);
+      if (in.ConsumeBool()) {
+        c.max_friction_torque = Float(in, -1, 10);
+        c.twist_motor = Motor(in);
+        c.swing_motor = Motor(in);
+        c.twist_motor_state = static_cast<MotorState>(in.ConsumeIntegralInRange<int>(0, 3));
+        c.swing_motor_state = static_cast<MotorState>(in.ConsumeIntegralInRange<int>(0, 3));
+        c.target_angular_velocity = Vec(in, -10, 10);
+        c.target_orientation = Quat(in);
+      }
+      return c;
+    }
+    case 10: {
+      SixDofConstraintSettings c;
+      Common(in, bodies, c);
+      c.position1 = Vec(in, -5, 5);
+      c.position2 = in.ConsumeBool() ? c.position1 : Vec(in, -5, 5);
+      const Frame f1 = AxisPair(in), f2 = in.ConsumeBool() ? f1 : AxisPair(in);
+      c.axis_x1 = f1.axis, c.axis_y1 = f1.normal;
+      c.axis_x2 = f2.axis, c.axis_y2 = f2.normal;
+      c.swing_type = in.ConsumeBool() ? SwingType::kCone : SwingType::kPyramid;
+      for (std::size_t axis = 0; axis < kSixDofAxes; ++axis) {
+        // Fixed, free, limited, inverted and out-of-range limits.
+        switch (in.ConsumeIntegralInRange<int>(0, 3)) {
+          case 0: c.MakeFixedAxis(SixDofAxis(axis)); break;
+          case 1: c.MakeFreeAxis(SixDofAxis(axis)); break;
+          default: c.SetLimitedAxis(SixDofAxis(axis), Float(in, -4, 1), Float(in, -1, 4)); break;
+        }
+        if (in.ConsumeBool()) {
+          c.motor[axis] = Motor(in);
+          c.motor_state[axis] = static_cast<MotorState>(in.ConsumeIntegralInRange<int>(0, 3));
+          c.max_friction[axis] = Float(in, -1, 10);
+        }
+        if (axis < 3 && in.ConsumeBool()) c.limits_spring[axis] = Spring(in);
+      }
+      c.target_velocity = Vec(in, -10, 10);
+      c.target_angular_velocity = Vec(in, -10, 10);
+      c.target_position = Vec(in, -2, 2);
+      c.target_orientation = Quat(in);
       return c;
     }
   }
@@ -321,7 +359,7 @@ void RandomCall(FuzzedDataProvider& in, Batch& batch) {
   const std::size_t constraints = batch.constraint_count();
   const std::size_t w = Index(in, worlds), b = Index(in, bodies), c = Index(in, constraints);
   std::vector<float> state(worlds * bodies * kStateFloatsPerBody);
-  switch (in.ConsumeIntegralInRange<int>(0, 19)) {
+  switch (in.ConsumeIntegralInRange<int>(0, 23)) {
     case 0: batch.SetForce(w, b, Vec(in, -100, 100)); break;
     case 1: batch.SetTorque(w, b, Vec(in, -100, 100)); break;
     case 2: {
@@ -374,6 +412,10 @@ void RandomCall(FuzzedDataProvider& in, Batch& batch) {
     case 16: batch.SetMotorSpring(w, c, Float(in, -1, 50), Float(in, 0, 5)); break;
     case 17: batch.SetMotorLimits(w, c, Float(in, -100, 10), Float(in, -10, 100)); break;
     case 18: batch.SetMaxFriction(w, c, Float(in, -1, 10)); break;
+    case 19: batch.SetTargetOrientation(w, c, Quat(in)); break;
+    case 20: batch.SetTargetAngularVelocity(w, c, Vec(in, -10, 10)); break;
+    case 21: batch.SetTargetTranslation(w, c, Vec(in, -2, 2)); break;
+    case 22: batch.SetTargetLinearVelocity(w, c, Vec(in, -10, 10)); break;
     default: batch.SetRatio(w, c, Float(in, -5, 5)); break;
   }
 }
