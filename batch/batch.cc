@@ -746,4 +746,18 @@ float Batch::MaxConstraintError(std::size_t world) const {
                                   Impl::Lane(world));
 }
 
+double Batch::ConstraintError(std::size_t world, std::size_t constraint) const {
+  impl_->CheckWorld(world);
+  impl_->Constraint(constraint);  // throws for an index out of range
+  return ConstraintErrorOfLane(impl_->plan_, impl_->Block(world / kLaneWidth), Impl::Lane(world),
+                               constraint);
+}
+
+double Batch::ConstraintVelocityError(std::size_t world, std::size_t constraint) const {
+  impl_->CheckWorld(world);
+  impl_->Constraint(constraint);  // throws for an index out of range
+  return ConstraintVelocityErrorOfLane(impl_->plan_, impl_->Block(world / kLaneWidth),
+                                       Impl::Lane(world), constraint);
+}
+
 }  // namespace manyworlds

@@ -153,6 +153,31 @@ double SwingTwistViolation(Rotation q, const SwingTwistConfig& config, const Lan
                                 std::asin(std::min(1.0, allowed))));
 }
 
+
+// Velocity of a body's point at world lever arm r (from the COM); a static
+// body has none, whatever its lanes hold.
+struct Motion {
+  Vector v, w;
+};
+
+Motion BodyMotion(const StepPlan& plan, const LaneReader& read, std::size_t body) {
+  if (plan.bodies[body].motion == MotionType::kStatic) {
+    return Motion{Vector::Zero(), Vector::Zero()};
+  }
+  const BodyLanes& b = read.at<BodyLanes>(plan.bodies[body].offset);
+  return Motion{read(b.linear_velocity), read(b.angular_velocity)};
+}
+
+Vector PointVelocity(const Motion& m, const Vector& r) { return m.v + m.w.cross(r); }
+
+// |v_p2 - v_p1| at the anchors of a point part.
+double AnchorVelocityError(const Pose& b1, const Motion& m1, const Pose& b2, const Motion& m2,
+                           const LaneReader& read, const PointGeometry& anchors) {
+  return (PointVelocity(m2, b2.q * read(anchors.r2_local)) -
+          PointVelocity(m1, b1.q * read(anchors.r1_local)))
+      .norm();
+}
+
 }  // namespace
 
 double ConstraintErrorOfLane(const StepPlan& plan, const std::byte* block, std::size_t lane,
@@ -314,6 +339,111 @@ double ConstraintErrorOfLane(const StepPlan& plan, const std::byte* block, std::
           read(s.geometry.ratio) *
               (b2.x + b2.q * read(s.anchors.r2_local) - read(s.fixed_point2)).norm();
       return LimitViolation(length, read(s.min_length), read(s.max_length));
+    }
+  }
+  return 0.0;
+}
+
+double ConstraintVelocityErrorOfLane(const StepPlan& plan, const std::byte* block,
+                                     std::size_t lane, std::size_t index) {
+  const LaneReader read{block, lane};
+  const ConstraintPlan& c = plan.constraints[index];
+  const Pose b1 = BodyPose(plan, read, c.body1);
+  const Pose b2 = BodyPose(plan, read, c.body2);
+  const Motion m1 = BodyMotion(plan, read, c.body1);
+  const Motion m2 = BodyMotion(plan, read, c.body2);
+  switch (c.type) {
+    case ConstraintType::kPoint:
+      return AnchorVelocityError(b1, m1, b2, m2, read,
+                                 read.at<PointConstraintLanes>(c.offset).anchors);
+    case ConstraintType::kFixed:
+      return std::max(AnchorVelocityError(b1, m1, b2, m2, read,
+                                          read.at<FixedConstraintLanes>(c.offset).anchors),
+                      (m2.w - m1.w).norm());
+    case ConstraintType::kHinge: {
+      const auto& s = read.at<HingeConstraintLanes>(c.offset);
+      const Vector a1 = b1.q * read(s.hinge_axis1_local);
+      return std::max(AnchorVelocityError(b1, m1, b2, m2, read, s.anchors),
+                      (m2.w - m1.w).cross(a1).norm());
+    }
+    case ConstraintType::kSlider: {
+      const auto& s = read.at<SliderConstraintLanes>(c.offset);
+      const Vector r1 = b1.q * read(s.anchors.r1_local);
+      const Vector r2 = b2.q * read(s.anchors.r2_local);
+      const Vector u = (b2.x + r2) - (b1.x + r1);
+      const Vector axis = b1.q * read(s.slider_axis1_local);
+      // d/dt of u . n for a normal n turning with body 1 (Jolt's dual axis rows).
+      const Vector rate = PointVelocity(m2, r2) - PointVelocity(m1, r1 + u);
+      return std::max((rate - rate.dot(axis) * axis).norm(), (m2.w - m1.w).norm());
+    }
+    case ConstraintType::kGear: {
+      const auto& s = read.at<GearConstraintLanes>(c.offset);
+      const Vector a1 = b1.q * read(s.hinge_axis1_local);
+      const Vector a2 = b2.q * read(s.hinge_axis2_local);
+      return std::abs(a1.dot(m1.w) + read(s.geometry.ratio) * a2.dot(m2.w));
+    }
+    case ConstraintType::kRackAndPinion: {
+      const auto& s = read.at<RackAndPinionConstraintLanes>(c.offset);
+      const Vector a = b1.q * read(s.hinge_axis1_local);
+      const Vector b = b2.q * read(s.slider_axis2_local);
+      return std::abs(a.dot(m1.w) - read(s.geometry.ratio) * b.dot(m2.v));
+    }
+    case ConstraintType::kDistance: {
+      const auto& s = read.at<DistanceConstraintLanes>(c.offset);
+      const auto& limit = read.at<LinearLimitLanes>(c.limit_offset);
+      if (read(limit.min) != read(limit.max)) return 0.0;
+      const Vector r1 = b1.q * read(s.anchors.r1_local);
+      const Vector r2 = b2.q * read(s.anchors.r2_local);
+      const Vector separation = (b2.x + r2) - (b1.x + r1);
+      const double length = separation.norm();
+      if (length == 0.0) return 0.0;  // no direction to measure along
+      return std::abs(separation.dot(PointVelocity(m2, r2) - PointVelocity(m1, r1)) / length);
+    }
+    case ConstraintType::kPulley: {
+      const auto& s = read.at<PulleyConstraintLanes>(c.offset);
+      if (read(s.min_length) != read(s.max_length)) return 0.0;
+      const auto segment_rate = [](const Vector& point, const Vector& fixed,
+                                   const Vector& velocity) {
+        const Vector segment = point - fixed;
+        const double length = segment.norm();
+        return length == 0.0 ? 0.0 : segment.dot(velocity) / length;
+      };
+      const Vector r1 = b1.q * read(s.anchors.r1_local);
+      const Vector r2 = b2.q * read(s.anchors.r2_local);
+      return std::abs(
+          segment_rate(b1.x + r1, read(s.fixed_point1), PointVelocity(m1, r1)) +
+          read(s.geometry.ratio) *
+              segment_rate(b2.x + r2, read(s.fixed_point2), PointVelocity(m2, r2)));
+    }
+    case ConstraintType::kCone:
+      return AnchorVelocityError(b1, m1, b2, m2, read,
+                                 read.at<ConeConstraintLanes>(c.offset).anchors);
+    case ConstraintType::kSwingTwist:
+      return AnchorVelocityError(b1, m1, b2, m2, read,
+                                 read.at<SwingTwistConstraintLanes>(c.offset).anchors);
+    case ConstraintType::kSixDof: {
+      const auto& s = read.at<SixDofConstraintLanes>(c.offset);
+      const double rotation = c.six_dof.rotation_euler ? (m2.w - m1.w).norm() : 0.0;
+      if (c.six_dof.translation_point) {
+        // The constrained points: body 1's anchor moved by c1 limit_min.
+        return std::max(rotation, AnchorVelocityError(b1, m1, b2, m2, read, s.fixed_anchors));
+      }
+      const Vector r1 = b1.q * read(s.anchors.r1_local);
+      const Vector r2 = b2.q * read(s.anchors.r2_local);
+      const Vector u = (b2.x + r2) - (b1.x + r1);
+      // d/dt of u . a_i for the frame axes a_i turning with body 1 (the
+      // slider's rows), over the hard fixed axes only.
+      const Vector rate = PointVelocity(m2, r2) - PointVelocity(m1, r1 + u);
+      const Rotation frame1 = b1.q * read(s.frames.constraint_to_body1);
+      double squared = 0.0;
+      for (int i = 0; i < 3; ++i) {
+        if (c.six_dof.translation[i] != AxisLimitKind::kLocked || c.six_dof.translation_soft[i]) {
+          continue;
+        }
+        const double along = rate.dot(frame1 * Vector::Unit(i));
+        squared += along * along;
+      }
+      return std::max(rotation, std::sqrt(squared));
     }
   }
   return 0.0;

@@ -26,4 +26,28 @@ float MaxConstraintErrorOfLane(const StepPlan& plan, const std::byte* block, std
 double ConstraintErrorOfLane(const StepPlan& plan, const std::byte* block, std::size_t lane,
                              std::size_t constraint);
 
+// Velocity residual |J v| of one constraint's equality rows, from the lane's
+// current velocities (m/s for linear rows, rad/s for angular rows; the
+// largest of the constraint's groups of rows, as the position error):
+//
+//   point      |v_p2 - v_p1|, v_p = v + w x r at the anchor
+//   fixed      max(|v_p2 - v_p1|, |w2 - w1|)
+//   hinge      max(|v_p2 - v_p1|, |(w2 - w1) x a1|)   (a1 the hinge axis)
+//   slider     max(|P (v2 + w2 x r2 - v1 - w1 x (r1 + u))|, |w2 - w1|),
+//              P = 1 - s s^T removes the free slider axis s
+//   gear       |a1 . w1 + r a2 . w2|
+//   rack       |a . w1 - r b . v2|   (a the pinion axis, b the rack axis)
+//   distance   |d/dt |p2 - p1|| when min = max (a rod), else 0
+//   pulley     |dL/dt| when min = max, else 0
+//   cone, swing-twist   the anchor rows, |v_p2 - v_p1|
+//   six-DOF    max(|w2 - w1| when every rotation is fixed, the slider's rows
+//              along the hard fixed translation axes of body 1's frame, or
+//              |v_p2 - v_p1| at the fixed anchors when every translation is)
+//
+// Limit rows, motors, friction and the cone and swing-twist angle limits are
+// inequalities or drives, not equalities: a non-zero velocity along them is
+// allowed, so they are left out.
+double ConstraintVelocityErrorOfLane(const StepPlan& plan, const std::byte* block,
+                                     std::size_t lane, std::size_t constraint);
+
 }  // namespace manyworlds

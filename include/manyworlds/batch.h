@@ -183,6 +183,12 @@ class Batch {
   // The largest position error of any constraint in a world after the last
   // step (m for linear rows, rad for angular rows), for accuracy reports.
   float MaxConstraintError(std::size_t world) const;
+  // The position error of one constraint of a world (as above), and the
+  // velocity residual |J v| of its equality rows (m/s for linear rows, rad/s
+  // for angular rows; limits, motors and friction excluded): see
+  // batch/constraint_error.h for each constraint type.
+  double ConstraintError(std::size_t world, std::size_t constraint) const;
+  double ConstraintVelocityError(std::size_t world, std::size_t constraint) const;
 
   class Impl;
 

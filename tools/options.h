@@ -1,0 +1,98 @@
+// Command-line options of the manyworlds program's commands: "--name value",
+// "--name=value" and bare flags, checked against the options a command knows.
+#pragma once
+
+#include <algorithm>
+#include <charconv>
+#include <cstdint>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace manyworlds::tools {
+
+// A bad command line: the message names the argument; exit code 2.
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+class Options {
+ public:
+  // argv[1] is the command; options start at argv[2]. `flags` take no value.
+  Options(int argc, char** argv, std::vector<std::string_view> known,
+          std::vector<std::string_view> flags = {}) {
+    for (int i = 2; i < argc; ++i) {
+      std::string_view arg = argv[i];
+      if (!arg.starts_with("--")) {
+        throw UsageError("unexpected argument '" + std::string(arg) + "'");
+      }
+      if (std::find(flags.begin(), flags.end(), arg) != flags.end()) {
+        values_[std::string(arg)] = "";
+        continue;
+      }
+      std::string_view value;
+      bool has_value = false;
+      if (const std::size_t eq = arg.find('='); eq != std::string_view::npos) {
+        value = arg.substr(eq + 1);
+        arg = arg.substr(0, eq);
+        has_value = true;
+      }
+      if (std::find(known.begin(), known.end(), arg) == known.end()) {
+        throw UsageError("unknown option '" + std::string(arg) + "' for '" + argv[1] + "'");
+      }
+      if (!has_value) {
+        if (i + 1 >= argc) throw UsageError(std::string(arg) + " needs a value");
+        value = argv[++i];
+      }
+      values_[std::string(arg)] = std::string(value);
+    }
+  }
+
+  bool Has(const std::string& name) const { return values_.contains(name); }
+
+  std::string Text(const std::string& name) const {
+    const auto found = values_.find(name);
+    if (found == values_.end()) throw UsageError(name + " is required");
+    return found->second;
+  }
+  std::string Text(const std::string& name, const std::string& fallback) const {
+    return Has(name) ? Text(name) : fallback;
+  }
+
+  // A whole number in [min, max]; `fallback` when the option is absent.
+  std::uint64_t Number(const std::string& name, std::uint64_t fallback, std::uint64_t min,
+                       std::uint64_t max) const {
+    const auto found = values_.find(name);
+    if (found == values_.end()) return fallback;
+    const std::string& text = found->second;
+    std::uint64_t value = 0;
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (error != std::errc() || end != text.data() + text.size() || value < min || value > max) {
+      throw UsageError(name + " = '" + text + "' is not a whole number from " +
+                       std::to_string(min) + " to " + std::to_string(max));
+    }
+    return value;
+  }
+
+  // A finite number in [min, max]; `fallback` when the option is absent.
+  double Real(const std::string& name, double fallback, double min, double max) const {
+    const auto found = values_.find(name);
+    if (found == values_.end()) return fallback;
+    const std::string& text = found->second;
+    double value = 0.0;
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (error != std::errc() || end != text.data() + text.size() || !(value >= min) ||
+        !(value <= max)) {
+      throw UsageError(name + " = '" + text + "' is not a number from " + std::to_string(min) +
+                       " to " + std::to_string(max));
+    }
+    return value;
+  }
+
+ private:
+  std::map<std::string, std::string> values_;
+};
+
+}  // namespace manyworlds::tools

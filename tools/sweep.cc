@@ -1,0 +1,371 @@
+// `manyworlds sweep`: error against run time (see sweep.h).
+
+#include "tools/sweep.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <ctime>  // also POSIX clock_gettime
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <span>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "manyworlds/batch.h"
+#include "manyworlds/scene.h"
+#include "manyworlds/scenes.h"
+#include "reference/world.h"
+#include "tools/options.h"
+#include "tools/sweep_metrics.h"
+#include "tools/sweep_report.h"
+
+namespace manyworlds::tools {
+
+std::vector<std::string> SweepSceneIds() { return ReferenceSceneIds(); }
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// The step settings every knob setting starts from: the spec's defaults for
+// every reference scene.
+StepSettings BaseSettings() { return StepSettings{}; }
+
+// ---- the settings swept
+
+
+struct KnobValues {
+  std::vector<int> substeps, velocity_iterations, position_iterations;
+};
+
+KnobValues ValuesOf(bool small) {
+  if (small) return {{1, 2}, {1, 10}, {0, 2}};
+  return {{1, 2, 4, 8}, {1, 2, 4, 8, 10}, {0, 1, 2}};
+}
+
+// One knob at a time from the default (the default itself once), or every
+// combination. One-at-a-time gives the curves of the plots at a tenth of the
+// grid's cost; the grid shows how the knobs combine.
+std::vector<Knobs> SettingsOf(const KnobValues& values, bool full_grid) {
+  std::vector<Knobs> settings;
+  if (full_grid) {
+    for (int s : values.substeps) {
+      for (int v : values.velocity_iterations) {
+        for (int p : values.position_iterations) settings.push_back({s, v, p});
+      }
+    }
+    return settings;
+  }
+  settings.push_back(kDefaultKnobs);
+  for (int s : values.substeps) {
+    if (s != kDefaultKnobs.substeps) settings.push_back({s, kDefaultKnobs.velocity_iterations,
+                                                         kDefaultKnobs.position_iterations});
+  }
+  for (int v : values.velocity_iterations) {
+    if (v != kDefaultKnobs.velocity_iterations) {
+      settings.push_back({kDefaultKnobs.substeps, v, kDefaultKnobs.position_iterations});
+    }
+  }
+  for (int p : values.position_iterations) {
+    if (p != kDefaultKnobs.position_iterations) {
+      settings.push_back({kDefaultKnobs.substeps, kDefaultKnobs.velocity_iterations, p});
+    }
+  }
+  return settings;
+}
+
+
+
+StepSettings StepSettingsOf(const Knobs& k) {
+  StepSettings settings = BaseSettings();
+  settings.substeps = k.substeps;
+  settings.velocity_iterations = k.velocity_iterations;
+  settings.position_iterations = k.position_iterations;
+  return settings;
+}
+
+// The reference of the trajectory error: dt/16 and 4x the default iterations.
+StepSettings FineSettings() {
+  StepSettings settings = BaseSettings();
+  settings.substeps = 16 * kDefaultKnobs.substeps;
+  settings.velocity_iterations = 4 * kDefaultKnobs.velocity_iterations;
+  settings.position_iterations = 4 * kDefaultKnobs.position_iterations;
+  return settings;
+}
+
+// ---- options
+
+
+std::vector<std::string> SplitIds(const std::string& text) {
+  std::vector<std::string> ids;
+  std::stringstream stream(text);
+  for (std::string id; std::getline(stream, id, ',');) {
+    if (!id.empty()) ids.push_back(id);
+  }
+  return ids;
+}
+
+SweepConfig ConfigOf(int argc, char** argv) {
+  const Options options(argc, argv,
+                        {"--scenes", "--worlds", "--sample-worlds", "--seconds", "--passes",
+                         "--min-time", "--threads", "--grid", "--out", "--seed"},
+                        {"--small"});
+  SweepConfig config;
+  config.small = options.Has("--small");
+  // --small: the smoke test's size, a few seconds in all.
+  config.scenes = SplitIds(options.Text(
+      "--scenes", config.small ? "rackpinion,chain16" : ""));
+  if (config.scenes.empty()) config.scenes = SweepSceneIds();
+  const std::vector<std::string> known = SweepSceneIds();
+  for (const std::string& id : config.scenes) {
+    if (std::find(known.begin(), known.end(), id) == known.end()) {
+      std::string list;
+      for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
+      throw UsageError("--scenes: unknown scene '" + id + "' (known: " + list + ")");
+    }
+  }
+  config.worlds = options.Number("--worlds", config.small ? 64 : 1024, 1, std::uint64_t(1) << 24);
+  config.sample_worlds =
+      options.Number("--sample-worlds", config.small ? 4 : 16, 1, 4096);
+  config.sample_worlds = std::min(config.sample_worlds, config.worlds);
+  // 1 s: long enough for drift to show, short enough that the chains' chaos
+  // (they are multiple pendulums) does not swamp the trajectory error.
+  config.seconds = options.Real("--seconds", config.small ? 0.25 : 1.0, 1e-3, 3600.0);
+  config.passes = int(options.Number("--passes", config.small ? 1 : 3, 1, 1000));
+  config.min_time = options.Real("--min-time", config.small ? 0.01 : 0.1, 0.0, 3600.0);
+  config.threads = int(options.Number("--threads", 1, 0, 4096));
+  const std::string grid = options.Text("--grid", "knobs");
+  if (grid != "knobs" && grid != "full") {
+    throw UsageError("--grid = '" + grid + "': expected 'knobs' or 'full'");
+  }
+  config.full_grid = grid == "full";
+  config.seed = options.Number("--seed", 1, 0, UINT64_MAX);
+  config.out = options.Text("--out", "sweep");
+  for (int i = 0; i < argc; ++i) config.command_line += (i ? " " : "") + std::string(argv[i]);
+  return config;
+}
+
+// ---- measurements
+
+
+// Body states of the sample worlds stepped by reference::World<double> with
+// FineSettings(): [step][world][body][13], StateField order.
+class ReferenceTrajectory {
+ public:
+  ReferenceTrajectory(const Scene& scene, const SceneActions& actions, std::size_t worlds,
+                      std::uint64_t steps, std::uint64_t seed)
+      : worlds_(worlds), stride_(scene.bodies().size() * kStateFloatsPerBody),
+        states_(steps * worlds * stride_) {
+    const StepSettings fine = FineSettings();
+    for (std::size_t w = 0; w < worlds; ++w) {
+      reference::World<double> world(scene);
+      for (std::uint64_t step = 0; step < steps; ++step) {
+        actions.ApplyTo(world, w, step, seed);
+        world.Step(fine);
+        double* out = &states_[(step * worlds + w) * stride_];
+        for (std::size_t b = 0; b < world.body_count(); ++b, out += kStateFloatsPerBody) {
+          const reference::Body<double>& body = world.body(b);
+          const double values[kStateFloatsPerBody] = {
+              body.position.x(),         body.position.y(),         body.position.z(),
+              body.rotation.x(),         body.rotation.y(),         body.rotation.z(),
+              body.rotation.w(),         body.linear_velocity.x(),  body.linear_velocity.y(),
+              body.linear_velocity.z(),  body.angular_velocity.x(), body.angular_velocity.y(),
+              body.angular_velocity.z()};
+          std::copy(std::begin(values), std::end(values), out);
+        }
+      }
+    }
+  }
+
+  std::span<const double> State(std::uint64_t step, std::size_t world) const {
+    return std::span<const double>(states_).subspan((step * worlds_ + world) * stride_, stride_);
+  }
+
+ private:
+  std::size_t worlds_, stride_;
+  std::vector<double> states_;
+};
+
+
+// Seconds of CPU time used by this process so far. On 1 thread that is the
+// cost of the steps alone: the time other programs on a shared machine take
+// the core away does not count (wall time on this build machine varied 2x
+// between passes of the same setting).
+double ProcessCpuSeconds() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
+
+double WallSeconds() {
+  return std::chrono::duration<double>(Clock::now().time_since_epoch()).count();
+}
+
+// ns per world-step of Batch::Step with the scene's actions, one pass (see
+// sweep.h): an untimed warm-up round, then timed rounds until --min-time;
+// the fastest round. Process CPU time on 1 thread, wall time on more (where
+// CPU time would add up the threads).
+double TimeSteps(const Scene& scene, const SceneActions& actions, const SweepConfig& config,
+                 std::uint64_t steps, const StepSettings& settings, Machine& machine) {
+  Batch batch(scene, config.worlds, BatchOptions{.threads = config.threads});
+  const bool cpu_time = batch.threads() == 1;
+  machine = Machine{batch.SimdTarget(), batch.SimdLanes(), batch.threads(),
+                    cpu_time ? "process CPU time" : "wall time"};
+  const auto now = cpu_time ? ProcessCpuSeconds : WallSeconds;
+  const std::vector<std::uint8_t> every_world(config.worlds, 1);
+  double fastest = std::numeric_limits<double>::infinity(), timed = 0.0;
+  for (int round = 0; round < 2 || timed < config.min_time; ++round) {
+    batch.Reset(every_world);  // every round times the same steps
+    const double start = now();
+    for (std::uint64_t step = 0; step < steps; ++step) {
+      actions.Apply(batch, step, config.seed);
+      batch.Step(settings);
+    }
+    const double seconds = now() - start;
+    if (round == 0) continue;  // warm-up: page faults, caches, TBB's threads
+    fastest = std::min(fastest, seconds);
+    timed += seconds;
+  }
+  return fastest * 1e9 / (double(config.worlds) * double(steps));
+}
+
+// The accuracy metrics of one setting over the sample worlds (see sweep.h).
+void MeasureAccuracy(const Scene& scene, const SceneActions& actions, const SweepConfig& config,
+                     std::uint64_t steps, const StepSettings& settings,
+                     const ReferenceTrajectory& reference, Row& row) {
+  const std::size_t worlds = config.sample_worlds;
+  Batch batch(scene, worlds, BatchOptions{.threads = 1});
+  const std::size_t stride = batch.body_count() * kStateFloatsPerBody;
+  std::vector<float> state(worlds * stride);
+  const auto world_state = [&](std::size_t w) {
+    return std::span<const float>(state).subspan(w * stride, stride);
+  };
+  const std::vector<std::size_t> couplings = CouplingConstraints(scene);
+  row.has_energy = EnergyIsConserved(scene, actions);
+  row.has_coupling = !couplings.empty();
+
+  batch.GetState(state);
+  std::vector<double> initial_energy(worlds);
+  for (std::size_t w = 0; w < worlds; ++w) {
+    initial_energy[w] = MechanicalEnergy(scene, world_state(w), settings.gravity);
+  }
+  std::vector<std::uint8_t> ever_unhealthy(worlds, 0);
+  double final_drift = 0.0;
+  for (std::uint64_t step = 0; step < steps; ++step) {
+    actions.Apply(batch, step, config.seed);
+    batch.Step(settings);
+    batch.GetState(state);
+    const std::span<const std::uint8_t> health = batch.WorldHealth();
+    for (std::size_t w = 0; w < worlds; ++w) {
+      ever_unhealthy[w] |= health[w];
+      for (std::size_t c = 0; c < batch.constraint_count(); ++c) {
+        row.position.Add(batch.ConstraintError(w, c));
+        row.velocity.Add(batch.ConstraintVelocityError(w, c));
+      }
+      for (std::size_t c : couplings) row.coupling.Add(batch.ConstraintError(w, c));
+      const PoseError pose = BodyPoseError(scene, world_state(w), reference.State(step, w));
+      row.trajectory_position.Add(pose.position);
+      row.trajectory_rotation.Add(pose.rotation);
+      if (row.has_energy) {
+        const double drift =
+            MechanicalEnergy(scene, world_state(w), settings.gravity) - initial_energy[w];
+        row.energy.Add(std::abs(drift));
+        if (step + 1 == steps) final_drift += drift;
+      }
+    }
+  }
+  row.energy_drift_final = final_drift / double(worlds);
+  row.unhealthy_worlds =
+      std::size_t(std::count_if(ever_unhealthy.begin(), ever_unhealthy.end(),
+                                [](std::uint8_t bits) { return bits != 0; }));
+}
+
+bool GnuplotInstalled() { return std::system("command -v gnuplot > /dev/null 2>&1") == 0; }
+
+}  // namespace
+
+int Sweep(int argc, char** argv) {
+  const SweepConfig config = ConfigOf(argc, argv);
+  const auto started = Clock::now();
+  const std::vector<Knobs> settings = SettingsOf(ValuesOf(config.small), config.full_grid);
+
+  // Errors first, setting by setting. Then the cost, in passes over every
+  // setting of every scene, each keeping its fastest pass: on a shared
+  // machine a busy minute then slows one pass of many settings rather than
+  // every measurement of a few.
+  std::vector<Row> rows;
+  std::vector<Scene> scenes;
+  for (const std::string& id : config.scenes) {
+    const Scene& scene = scenes.emplace_back(MakeReferenceScene(id));
+    const SceneActions actions(id);
+    const std::uint64_t steps = StepsPerRun(config, BaseSettings());
+    const ReferenceTrajectory reference(scene, actions, config.sample_worlds, steps,
+                                        config.seed);
+    for (const Knobs& knobs : settings) {
+      Row row;
+      row.scene = id;
+      row.knobs = knobs;
+      row.settings = StepSettingsOf(knobs);
+      MeasureAccuracy(scene, actions, config, steps, row.settings, reference, row);
+      std::printf("%-14s %-12s position error RMS %-9s velocity RMS %-9s trajectory RMS %-9s m\n",
+                  id.c_str(), SettingText(knobs).c_str(), Number(row.position.Rms()).c_str(),
+                  Number(row.velocity.Rms()).c_str(),
+                  Number(row.trajectory_position.Rms()).c_str());
+      std::fflush(stdout);
+      rows.push_back(std::move(row));
+    }
+  }
+  Machine machine;
+  for (int pass = 0; pass < config.passes; ++pass) {
+    const auto pass_start = Clock::now();
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      Row& row = rows[i];
+      const double ns =
+          TimeSteps(scenes[i / settings.size()], SceneActions(row.scene), config,
+                    StepsPerRun(config, row.settings), row.settings, machine);
+      row.ns_per_world_step = pass == 0 ? ns : std::min(row.ns_per_world_step, ns);
+    }
+    std::printf("timing pass %d of %d: %.1f s\n", pass + 1, config.passes,
+                std::chrono::duration<double>(Clock::now() - pass_start).count());
+    std::fflush(stdout);
+  }
+  const double wall = std::chrono::duration<double>(Clock::now() - started).count();
+
+  std::filesystem::create_directories(config.out);
+  {
+    std::ofstream csv(config.out / "sweep.csv");
+    WriteCsv(csv, rows, config, machine);
+  }
+  {
+    std::ofstream md(config.out / "sweep.md");
+    WriteMarkdown(md, rows, config, machine, wall);
+  }
+  {
+    std::ofstream gp(config.out / "sweep.gp");
+    WriteGnuplot(gp, rows, config, machine);
+  }
+  std::printf("wrote %s/sweep.csv, sweep.md, sweep.gp (%zu settings, %.1f s)\n",
+              config.out.c_str(), rows.size(), wall);
+  if (!GnuplotInstalled()) {
+    std::printf("gnuplot not found: no plots (apt-get install gnuplot-nox, then run "
+                "'gnuplot sweep.gp' in %s)\n",
+                config.out.c_str());
+    return 0;
+  }
+  const std::string plot = "cd '" + config.out.string() + "' && gnuplot sweep.gp";
+  if (std::system(plot.c_str()) != 0) {
+    std::fprintf(stderr, "manyworlds: gnuplot failed on %s/sweep.gp\n", config.out.c_str());
+    return 1;
+  }
+  std::printf("plotted %zu scene(s): %s/<scene>.png\n", config.scenes.size(),
+              config.out.c_str());
+  return 0;
+}
+
+}  // namespace manyworlds::tools
