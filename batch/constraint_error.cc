@@ -445,6 +445,38 @@ double ConstraintVelocityErrorOfLane(const StepPlan& plan, const std::byte* bloc
       }
       return std::max(rotation, std::sqrt(squared));
     }
+    case ConstraintType::kPath: {
+      // The rows across the path (Jolt's dual axis, with the path's normal and
+      // binormal turning with body 1) and the rotation rows, which ignore the
+      // path's curvature as Jolt's do; the motor and end limits are not
+      // equalities.
+      const auto& s = read.at<PathConstraintLanes>(c.offset);
+      const Rotation path_to_world = b1.q * read(s.path_to_body1_rotation);
+      const Vector origin = b1.x + b1.q * read(s.path_to_body1_position);
+      const Vector r2 = b2.q * read(s.attachment_to_body2_position);
+      const PathPointOnPath on_path =
+          ClosestPathPoint(c.Path(), Vector(path_to_world.conjugate() * (b2.x + r2 - origin)));
+      const Vector t = path_to_world * on_path.tangent;
+      const Vector rate = PointVelocity(m2, r2) - PointVelocity(m1, b2.x + r2 - b1.x);
+      double error = (rate - rate.dot(t) * t).norm();
+      const Vector w = m2.w - m1.w;
+      const Rotation path_frame = path_to_world * on_path.frame;
+      switch (c.path_rotation) {
+        case PathRotation::kFree: break;
+        case PathRotation::kConstrainAroundTangent:
+          error = std::max(error, w.cross(path_frame * Vector::UnitX()).norm());
+          break;
+        case PathRotation::kConstrainAroundNormal:
+          error = std::max(error, w.cross(path_frame * Vector::UnitZ()).norm());
+          break;
+        case PathRotation::kConstrainAroundBinormal:
+          error = std::max(error, w.cross(path_frame * Vector::UnitY()).norm());
+          break;
+        case PathRotation::kConstrainToPath:
+        case PathRotation::kFullyConstrained: error = std::max(error, w.norm()); break;
+      }
+      return error;
+    }
   }
   return 0.0;
 }

@@ -2,6 +2,7 @@
 
 #include "manyworlds/scenes.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <stdexcept>
@@ -321,7 +322,28 @@ float CartpoleForce(std::uint64_t seed, std::uint64_t world, std::uint64_t step)
   return ForceOf(StepKey(seed, step), world);
 }
 
+std::vector<std::string> AllSceneIds() {
+  std::vector<std::string> ids = ReferenceSceneIds();
+  for (const std::string& id : StressSceneIds()) {
+    if (std::find(ids.begin(), ids.end(), id) == ids.end()) ids.push_back(id);
+  }
+  return ids;
+}
+
+Scene MakeScene(std::string_view id) {
+  for (const std::string& reference : ReferenceSceneIds()) {
+    if (reference == id) return MakeReferenceScene(id);
+  }
+  return MakeStressScene(id);  // throws for an unknown id, listing the stress ids
+}
+
 SceneActions::SceneActions(std::string_view id) {
+  const auto stress = StressSceneIds();
+  const auto references = ReferenceSceneIds();
+  const bool stress_only = std::find(stress.begin(), stress.end(), id) != stress.end() &&
+                           std::find(references.begin(), references.end(), id) ==
+                               references.end();
+  if (stress_only) return;  // no stress scene has an action
   const SceneId scene = ParseId(id);
   if (scene == SceneId::kCartpole) {
     forces_per_world_ = 1;

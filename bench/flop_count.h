@@ -13,7 +13,9 @@
 //                            SIMD stepper executes in their place; fmod as
 //                            x - trunc(x / y) y;
 //   negation, abs, min, max,
-//   comparisons, copies      0 (sign-bit and select operations, not arithmetic).
+//   trunc, comparisons,
+//   copies                   0 (sign-bit, rounding and select operations, not
+//                            arithmetic).
 // Transcendental calls are also tallied by themselves, so their share is visible.
 //
 // The reference calls std::sqrt, std::sin, ... qualified, which no
@@ -136,6 +138,10 @@ Counted<F> abs(Counted<F> x) {
   return Counted<F>(std::abs(x.value()));
 }
 template <class F>
+Counted<F> trunc(Counted<F> x) {
+  return Counted<F>(std::trunc(x.value()));
+}
+template <class F>
 Counted<F> sin(Counted<F> x) {
   return Counted<F>::Transcendental(std::sin(x.value()), kSinFlops);
 }
@@ -182,6 +188,7 @@ using manyworlds::bench::isinf;
 using manyworlds::bench::isnan;
 using manyworlds::bench::sin;
 using manyworlds::bench::sqrt;
+using manyworlds::bench::trunc;
 
 template <class F>
 class numeric_limits<manyworlds::bench::Counted<F>> : public numeric_limits<F> {

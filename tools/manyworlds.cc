@@ -19,6 +19,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "manyworlds/batch.h"
 #include "manyworlds/error.h"
@@ -38,12 +39,12 @@ constexpr const char* kUsage =
     "  manyworlds run --scene ID [--worlds N] [--steps N] [--threads N] [--substeps N]\n"
     "                 [--velocity-iterations N] [--position-iterations N] [--warmup N]\n"
     "                 [--seed N]\n"
-    "      steps N worlds of a reference scene and reports throughput and constraint\n"
+    "      steps N worlds of a reference or stress scene and reports throughput and constraint\n"
     "      error (defaults: 4096 worlds, 1000 timed steps after 20 warm-up steps,\n"
     "      threads 0 = every core, 1 substep, 10 velocity and 2 position iterations,\n"
     "      seed 1 for the actions)\n"
     "  manyworlds plan --scene ID     prints what one step of the scene runs\n"
-    "  manyworlds scenes              lists the reference scene ids\n"
+    "  manyworlds scenes              lists the reference and stress scene ids\n"
     "  manyworlds sweep [--scenes A,B] [--worlds N] [--seconds S] [--threads N]\n"
     "                   [--sample-worlds N] [--passes N] [--min-time S] [--grid knobs|full]\n"
     "                   [--out DIR] [--seed N] [--small]\n"
@@ -58,17 +59,21 @@ constexpr const char* kUsage =
 // The scene of --scene; a UsageError naming the option for an unknown id.
 Scene SceneOf(const Options& options) {
   try {
-    return MakeReferenceScene(options.Text("--scene"));
+    return MakeScene(options.Text("--scene"));
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string("--scene: ") + e.what());
   }
 }
 
 int Scenes() {
-  for (const std::string& id : ReferenceSceneIds()) {
-    const Scene scene = MakeReferenceScene(id);
-    std::printf("%-14s %3zu bodies, %3zu constraints%s\n", id.c_str(), scene.bodies().size(),
-                scene.constraints().size(), SceneActions(id).empty() ? "" : ", actions");
+  const std::vector<std::string> stress = StressSceneIds();
+  for (const std::string& id : AllSceneIds()) {
+    const Scene scene = MakeScene(id);
+    const bool is_stress = std::find(stress.begin(), stress.end(), id) != stress.end();
+    std::printf("%-19s %3zu bodies, %3zu constraints%s%s, dt %g s\n", id.c_str(),
+                scene.bodies().size(), scene.constraints().size(),
+                SceneActions(id).empty() ? "" : ", actions", is_stress ? ", stress" : "",
+                double(SceneStepSettings(id).delta_time));
   }
   return 0;
 }
@@ -93,7 +98,9 @@ int Run(int argc, char** argv) {
   const std::uint64_t seed = options.Number("--seed", 1, 0, UINT64_MAX);
   BatchOptions batch_options;
   batch_options.threads = int(options.Number("--threads", 0, 0, 4096));
-  StepSettings settings;  // the spec's defaults: dt 1/60 s, gravity -9.81 Y, Baumgarte 0.2
+  // The spec's defaults (dt 1/60 s, gravity -9.81 Y, Baumgarte 0.2), or the
+  // stress scene's own dt.
+  StepSettings settings = SceneStepSettings(options.Text("--scene"));
   settings.substeps = int(options.Number("--substeps", 1, 1, 10'000));
   settings.velocity_iterations = int(options.Number("--velocity-iterations", 10, 0, 10'000));
   settings.position_iterations = int(options.Number("--position-iterations", 2, 0, 10'000));

@@ -27,15 +27,15 @@
 
 namespace manyworlds::tools {
 
-std::vector<std::string> SweepSceneIds() { return ReferenceSceneIds(); }
+std::vector<std::string> SweepSceneIds() { return AllSceneIds(); }
 
 namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// The step settings every knob setting starts from: the spec's defaults for
-// every reference scene.
-StepSettings BaseSettings() { return StepSettings{}; }
+// The step settings every knob setting starts from: the spec's defaults, or
+// a stress scene's own dt.
+StepSettings BaseSettings(const std::string& id) { return SceneStepSettings(id); }
 
 // ---- the settings swept
 
@@ -82,8 +82,8 @@ std::vector<Knobs> SettingsOf(const KnobValues& values, bool full_grid) {
 
 
 
-StepSettings StepSettingsOf(const Knobs& k) {
-  StepSettings settings = BaseSettings();
+StepSettings StepSettingsOf(const std::string& id, const Knobs& k) {
+  StepSettings settings = BaseSettings(id);
   settings.substeps = k.substeps;
   settings.velocity_iterations = k.velocity_iterations;
   settings.position_iterations = k.position_iterations;
@@ -91,8 +91,8 @@ StepSettings StepSettingsOf(const Knobs& k) {
 }
 
 // The reference of the trajectory error: dt/16 and 4x the default iterations.
-StepSettings FineSettings() {
-  StepSettings settings = BaseSettings();
+StepSettings FineSettings(const std::string& id) {
+  StepSettings settings = BaseSettings(id);
   settings.substeps = 16 * kDefaultKnobs.substeps;
   settings.velocity_iterations = 4 * kDefaultKnobs.velocity_iterations;
   settings.position_iterations = 4 * kDefaultKnobs.position_iterations;
@@ -155,14 +155,13 @@ SweepConfig ConfigOf(int argc, char** argv) {
 
 
 // Body states of the sample worlds stepped by reference::World<double> with
-// FineSettings(): [step][world][body][13], StateField order.
+// FineSettings(id): [step][world][body][13], StateField order.
 class ReferenceTrajectory {
  public:
-  ReferenceTrajectory(const Scene& scene, const SceneActions& actions, std::size_t worlds,
-                      std::uint64_t steps, std::uint64_t seed)
+  ReferenceTrajectory(const Scene& scene, const SceneActions& actions, const StepSettings& fine,
+                      std::size_t worlds, std::uint64_t steps, std::uint64_t seed)
       : worlds_(worlds), stride_(scene.bodies().size() * kStateFloatsPerBody),
         states_(steps * worlds * stride_) {
-    const StepSettings fine = FineSettings();
     for (std::size_t w = 0; w < worlds; ++w) {
       reference::World<double> world(scene);
       for (std::uint64_t step = 0; step < steps; ++step) {
@@ -302,16 +301,16 @@ int Sweep(int argc, char** argv) {
   std::vector<Row> rows;
   std::vector<Scene> scenes;
   for (const std::string& id : config.scenes) {
-    const Scene& scene = scenes.emplace_back(MakeReferenceScene(id));
+    const Scene& scene = scenes.emplace_back(MakeScene(id));
     const SceneActions actions(id);
-    const std::uint64_t steps = StepsPerRun(config, BaseSettings());
-    const ReferenceTrajectory reference(scene, actions, config.sample_worlds, steps,
-                                        config.seed);
+    const std::uint64_t steps = StepsPerRun(config, BaseSettings(id));
+    const ReferenceTrajectory reference(scene, actions, FineSettings(id), config.sample_worlds,
+                                        steps, config.seed);
     for (const Knobs& knobs : settings) {
       Row row;
       row.scene = id;
       row.knobs = knobs;
-      row.settings = StepSettingsOf(knobs);
+      row.settings = StepSettingsOf(id, knobs);
       MeasureAccuracy(scene, actions, config, steps, row.settings, reference, row);
       std::printf("%-14s %-12s position error RMS %-9s velocity RMS %-9s trajectory RMS %-9s m\n",
                   id.c_str(), SettingText(knobs).c_str(), Number(row.position.Rms()).c_str(),

@@ -57,6 +57,13 @@ Scene MakeStressScene(std::string_view id);
 // and dt-1/15 (1/15 s). Throws std::invalid_argument for an unknown id.
 StepSettings SceneStepSettings(std::string_view id);
 
+// Every scene id, reference then stress (each once), and the scene of any of
+// them (MakeReferenceScene or MakeStressScene): what the main program, the
+// benchmarks and the accuracy sweep accept. Throws std::invalid_argument for
+// an unknown id, listing the valid ones.
+std::vector<std::string> AllSceneIds();
+Scene MakeScene(std::string_view id);
+
 // A force (N, world space, through the centre of mass) on one body of one
 // world, acting during the next step.
 struct BodyForce {
@@ -74,7 +81,8 @@ struct MotorTarget {
 // The action of a reference scene each step, drawn per (seed, world, step)
 // by a splitmix64 hash. cartpole: a force on the cart along X, uniform in
 // [-10, 10) N. ragdoll: a position target for every elbow and knee motor,
-// uniform in the hinge's limits. Every other scene: no action.
+// uniform in the hinge's limits. Every other scene (stress scenes too): no
+// action.
 class SceneActions {
  public:
   // Throws std::invalid_argument for an unknown id, as MakeReferenceScene.
