@@ -22,6 +22,8 @@
 #include <cstddef>
 
 #include "batch/plan.h"
+#include "kernels/angle-inl.h"
+#include "kernels/axis-inl.h"
 #include "kernels/lane_math-inl.h"
 
 HWY_BEFORE_NAMESPACE();
@@ -56,6 +58,28 @@ HWY_INLINE void StoreDriveRow(DriveKind drive, LaneVec dt, MotorLanes& motor,
 // motor spring (CalculatePropertiesForMotor).
 inline bool DriveUsesSpring(DriveKind drive) {
   return drive == DriveKind::kPosition || drive == DriveKind::kPositionAndVelocity;
+}
+
+// A drive row's properties once StoreDriveRow has written its range and bias
+// and the caller its axis and error: hard for friction and velocity drives,
+// through the motor spring for position drives, and off in the worlds where
+// a position drive's spring has no stiffness. For axis (linear) and angle
+// (angular) rows alike.
+HWY_INLINE void CalculateDriveRowProperties(const BodyPair& bodies, DriveKind drive,
+                                            SpringMode mode, float delta_time,
+                                            const LaneFlags& no_spring,
+                                            const AxisGeometry& geometry, AxisLanes& part) {
+  if (!DriveUsesSpring(drive)) return AxisCalculateProperties(bodies, geometry, part);
+  AxisCalculatePropertiesForMotor(bodies, geometry, part, delta_time, mode);
+  if (drive == DriveKind::kPosition) AxisDeactivate(part, no_spring);
+}
+HWY_INLINE void CalculateDriveRowProperties(const BodyPair& bodies, DriveKind drive,
+                                            SpringMode mode, float delta_time,
+                                            const LaneFlags& no_spring,
+                                            const AngleGeometry& geometry, AngleLanes& part) {
+  if (!DriveUsesSpring(drive)) return AngleCalculateProperties(bodies, geometry, part);
+  AngleCalculatePropertiesForMotor(bodies, geometry, part, delta_time, mode);
+  if (drive == DriveKind::kPosition) AngleDeactivate(part, no_spring);
 }
 
 // Writes a limit row's impulse range: `min_engaged` where the min limit is

@@ -111,13 +111,8 @@ inline void HingeMotorProperties(const ConstraintBlock& c, const StepScalars& st
               hn::Sub(Load(s.angle, offset), Load(motor.target_position, offset))),
           motor.geometry.error, offset);
   });
-  if (!DriveUsesSpring(drive)) {
-    AngleCalculateProperties(c.bodies, motor.geometry, motor.part);
-  } else {
-    AngleCalculatePropertiesForMotor(c.bodies, motor.geometry, motor.part, step.delta_time,
-                                     c.plan.motor_spring_mode);
-    if (drive == DriveKind::kPosition) AngleDeactivate(motor.part, no_spring);
-  }
+  CalculateDriveRowProperties(c.bodies, drive, c.plan.motor_spring_mode, step.delta_time,
+                              no_spring, motor.geometry, motor.part);
 }
 
 inline void HingeConstraintSetup(const ConstraintBlock& c, const StepScalars& step) {

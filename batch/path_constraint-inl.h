@@ -161,13 +161,8 @@ inline void PathConstraintProperties(const ConstraintBlock& c, const StepScalars
     }
     Store(error, motor.geometry.error, offset);
   });
-  if (!DriveUsesSpring(drive)) {
-    AxisCalculateProperties(c.bodies, motor.geometry, motor.part);
-  } else {
-    AxisCalculatePropertiesForMotor(c.bodies, motor.geometry, motor.part, step.delta_time,
-                                    c.plan.motor_spring_mode);
-    if (drive == DriveKind::kPosition) AxisDeactivate(motor.part, no_spring);
-  }
+  CalculateDriveRowProperties(c.bodies, drive, c.plan.motor_spring_mode, step.delta_time,
+                              no_spring, motor.geometry, motor.part);
 }
 
 inline void PathConstraintSetup(const ConstraintBlock& c, const StepScalars& step) {

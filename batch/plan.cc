@@ -64,9 +64,12 @@ void CheckAxis(const std::string& what, const std::string& field, const Float3& 
   if (Length(axis) < 1e-6) Refuse(what, field, "is zero (a direction is needed)");
 }
 
-// Two axes of one frame must be perpendicular (Jolt asserts it).
-void CheckPerpendicular(const std::string& what, const std::string& first,
-                        const Float3& a, const std::string& second, const Float3& b) {
+// Two axes of one frame: each a direction (CheckAxis), and perpendicular to
+// each other (Jolt asserts it).
+void CheckFrameAxes(const std::string& what, const std::string& first, const Float3& a,
+                    const std::string& second, const Float3& b) {
+  CheckAxis(what, first, a);
+  CheckAxis(what, second, b);
   const double dot = (double(a[0]) * b[0] + double(a[1]) * b[1] + double(a[2]) * b[2]) /
                      (Length(a) * Length(b));
   if (std::abs(dot) > 1e-3) {
@@ -256,12 +259,8 @@ void PlanSixDof(const std::string& what, const SixDofConstraintSettings& s,
                        ConstraintPlan& c, BlockLayout& layout) {
   CheckFinite(what, "position1", s.position1);
   CheckFinite(what, "position2", s.position2);
-  CheckAxis(what, "axis_x1", s.axis_x1);
-  CheckAxis(what, "axis_y1", s.axis_y1);
-  CheckAxis(what, "axis_x2", s.axis_x2);
-  CheckAxis(what, "axis_y2", s.axis_y2);
-  CheckPerpendicular(what, "axis_x1", s.axis_x1, "axis_y1", s.axis_y1);
-  CheckPerpendicular(what, "axis_x2", s.axis_x2, "axis_y2", s.axis_y2);
+  CheckFrameAxes(what, "axis_x1", s.axis_x1, "axis_y1", s.axis_y1);
+  CheckFrameAxes(what, "axis_x2", s.axis_x2, "axis_y2", s.axis_y2);
   const auto indexed = IndexedField;
   for (std::size_t i = 0; i < kSixDofAxes; ++i) {
     if (std::isnan(s.limit_min[i])) Refuse(what, indexed("limit_min", i), "is NaN");
@@ -560,12 +559,8 @@ StepPlan CompilePlan(const Scene& scene) {
           } else if constexpr (std::is_same_v<S, FixedConstraintSettings>) {
             CheckFinite(what, "point1", s.point1);
             CheckFinite(what, "point2", s.point2);
-            CheckAxis(what, "axis_x1", s.axis_x1);
-            CheckAxis(what, "axis_y1", s.axis_y1);
-            CheckAxis(what, "axis_x2", s.axis_x2);
-            CheckAxis(what, "axis_y2", s.axis_y2);
-            CheckPerpendicular(what, "axis_x1", s.axis_x1, "axis_y1", s.axis_y1);
-            CheckPerpendicular(what, "axis_x2", s.axis_x2, "axis_y2", s.axis_y2);
+            CheckFrameAxes(what, "axis_x1", s.axis_x1, "axis_y1", s.axis_y1);
+            CheckFrameAxes(what, "axis_x2", s.axis_x2, "axis_y2", s.axis_y2);
             if (s.auto_detect_point && s.space != ConstraintSpace::kWorldSpace) {
               Refuse(what, "auto_detect_point", "needs space = kWorldSpace");
             }
@@ -574,14 +569,8 @@ StepPlan CompilePlan(const Scene& scene) {
           } else if constexpr (std::is_same_v<S, HingeConstraintSettings>) {
             CheckFinite(what, "point1", s.point1);
             CheckFinite(what, "point2", s.point2);
-            CheckAxis(what, "hinge_axis1", s.hinge_axis1);
-            CheckAxis(what, "normal_axis1", s.normal_axis1);
-            CheckAxis(what, "hinge_axis2", s.hinge_axis2);
-            CheckAxis(what, "normal_axis2", s.normal_axis2);
-            CheckPerpendicular(what, "hinge_axis1", s.hinge_axis1, "normal_axis1",
-                               s.normal_axis1);
-            CheckPerpendicular(what, "hinge_axis2", s.hinge_axis2, "normal_axis2",
-                               s.normal_axis2);
+            CheckFrameAxes(what, "hinge_axis1", s.hinge_axis1, "normal_axis1", s.normal_axis1);
+            CheckFrameAxes(what, "hinge_axis2", s.hinge_axis2, "normal_axis2", s.normal_axis2);
             if (!(s.limits_min >= -kPi && s.limits_min <= 0.0f)) {
               Refuse(what, "limits_min", "must lie in [-pi, 0] (got " +
                                              std::to_string(s.limits_min) + ")");
@@ -608,14 +597,8 @@ StepPlan CompilePlan(const Scene& scene) {
           } else if constexpr (std::is_same_v<S, SliderConstraintSettings>) {
             CheckFinite(what, "point1", s.point1);
             CheckFinite(what, "point2", s.point2);
-            CheckAxis(what, "slider_axis1", s.slider_axis1);
-            CheckAxis(what, "normal_axis1", s.normal_axis1);
-            CheckAxis(what, "slider_axis2", s.slider_axis2);
-            CheckAxis(what, "normal_axis2", s.normal_axis2);
-            CheckPerpendicular(what, "slider_axis1", s.slider_axis1, "normal_axis1",
-                               s.normal_axis1);
-            CheckPerpendicular(what, "slider_axis2", s.slider_axis2, "normal_axis2",
-                               s.normal_axis2);
+            CheckFrameAxes(what, "slider_axis1", s.slider_axis1, "normal_axis1", s.normal_axis1);
+            CheckFrameAxes(what, "slider_axis2", s.slider_axis2, "normal_axis2", s.normal_axis2);
             if (std::isnan(s.limits_min) || s.limits_min > 0.0f) {
               Refuse(what, "limits_min", "must be <= 0 (got " +
                                              std::to_string(s.limits_min) + ")");
@@ -664,12 +647,8 @@ StepPlan CompilePlan(const Scene& scene) {
           } else if constexpr (std::is_same_v<S, SwingTwistConstraintSettings>) {
             CheckFinite(what, "point1", s.point1);
             CheckFinite(what, "point2", s.point2);
-            CheckAxis(what, "twist_axis1", s.twist_axis1);
-            CheckAxis(what, "plane_axis1", s.plane_axis1);
-            CheckAxis(what, "twist_axis2", s.twist_axis2);
-            CheckAxis(what, "plane_axis2", s.plane_axis2);
-            CheckPerpendicular(what, "twist_axis1", s.twist_axis1, "plane_axis1", s.plane_axis1);
-            CheckPerpendicular(what, "twist_axis2", s.twist_axis2, "plane_axis2", s.plane_axis2);
+            CheckFrameAxes(what, "twist_axis1", s.twist_axis1, "plane_axis1", s.plane_axis1);
+            CheckFrameAxes(what, "twist_axis2", s.twist_axis2, "plane_axis2", s.plane_axis2);
             const auto in_range = [&](const char* field, float x, float low) {
               if (!(x >= low && x <= kPi)) {
                 Refuse(what, field, "must lie in [" + std::string(low < 0.0f ? "-pi" : "0") +

@@ -107,13 +107,8 @@ inline void RotationDriveProperties(const ConstraintBlock& c, const SwingTwistGe
   for (int i = 0; i < 3; ++i) {
     AngularDriveRowLanes& row = drive.rows[i];
     if (kinds[i] == DriveKind::kNone) continue;
-    if (!DriveUsesSpring(kinds[i])) {
-      AngleCalculateProperties(c.bodies, row.geometry, row.part);
-    } else {
-      AngleCalculatePropertiesForMotor(c.bodies, row.geometry, row.part, step.delta_time,
-                                       c.plan.rotation_drive_spring_modes[i]);
-      if (kinds[i] == DriveKind::kPosition) AngleDeactivate(row.part, no_spring[i]);
-    }
+    CalculateDriveRowProperties(c.bodies, kinds[i], c.plan.rotation_drive_spring_modes[i],
+                                step.delta_time, no_spring[i], row.geometry, row.part);
   }
 }
 

@@ -2,6 +2,8 @@
 
 #include "manyworlds/scenes.h"
 
+#include "batch/scene_bodies.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -38,28 +40,8 @@ SceneId ParseId(std::string_view id) {
                               "'; valid ids: " + valid);
 }
 
-// Jolt's body defaults except damping, which every reference scene sets to 0.
-BodySettings Dynamic(std::string name, float mass, Float3 inertia, Float3 position) {
-  BodySettings body;
-  body.name = std::move(name);
-  body.motion_type = MotionType::kDynamic;
-  body.mass = mass;
-  body.inertia_diagonal = inertia;
-  body.position = position;
-  body.linear_damping = 0.0f;
-  body.angular_damping = 0.0f;
-  return body;
-}
-
-// The static world body every scene anchors its joints to, at the origin.
-BodySettings StaticWorld() {
-  BodySettings body;
-  body.name = "world";
-  body.motion_type = MotionType::kStatic;
-  body.linear_damping = 0.0f;
-  body.angular_damping = 0.0f;
-  return body;
-}
+using scene_bodies::Dynamic;
+using scene_bodies::StaticWorld;
 
 // A hinge about Z through `point` (world space), normal axes X in both bodies
 // unless given.

@@ -122,13 +122,8 @@ inline void SixDofTranslationDriveProperties(const ConstraintBlock& c, int i,
     Store(hn::Sub(Load(s.displacement[i], offset), Load(motor.target_position, offset)),
           motor.geometry.error, offset);
   });
-  if (!DriveUsesSpring(drive)) {
-    AxisCalculateProperties(c.bodies, motor.geometry, motor.part);
-  } else {
-    AxisCalculatePropertiesForMotor(c.bodies, motor.geometry, motor.part, step.delta_time,
-                                    c.plan.six_dof.translation_drive_spring_modes[i]);
-    if (drive == DriveKind::kPosition) AxisDeactivate(motor.part, no_spring);
-  }
+  CalculateDriveRowProperties(c.bodies, drive, c.plan.six_dof.translation_drive_spring_modes[i],
+                              step.delta_time, no_spring, motor.geometry, motor.part);
 }
 
 HWY_INLINE bool SixDofHasTranslationRow(const SixDofConfig& config, int i) {

@@ -121,13 +121,8 @@ inline void SliderMotorProperties(const ConstraintBlock& c, const StepScalars& s
     Store(hn::Sub(Load(s.position, offset), Load(motor.target_position, offset)),
           motor.geometry.error, offset);
   });
-  if (!DriveUsesSpring(drive)) {
-    AxisCalculateProperties(c.bodies, motor.geometry, motor.part);
-  } else {
-    AxisCalculatePropertiesForMotor(c.bodies, motor.geometry, motor.part, step.delta_time,
-                                    c.plan.motor_spring_mode);
-    if (drive == DriveKind::kPosition) AxisDeactivate(motor.part, no_spring);
-  }
+  CalculateDriveRowProperties(c.bodies, drive, c.plan.motor_spring_mode, step.delta_time,
+                              no_spring, motor.geometry, motor.part);
 }
 
 inline void SliderConstraintSetup(const ConstraintBlock& c, const StepScalars& step) {

@@ -11,6 +11,8 @@
 
 #include "manyworlds/scenes.h"
 
+#include "batch/scene_bodies.h"
+
 namespace manyworlds {
 namespace {
 
@@ -66,29 +68,8 @@ std::string StressIdList() {
   return valid;
 }
 
-// Jolt's body defaults except damping, which every stress scene sets to 0 so
-// that energy is a meaningful check.
-BodySettings Dynamic(std::string name, float mass, Float3 inertia, Float3 position,
-                     Quaternion rotation = {0, 0, 0, 1}) {
-  BodySettings body;
-  body.name = std::move(name);
-  body.mass = mass;
-  body.inertia_diagonal = inertia;
-  body.position = position;
-  body.rotation = rotation;
-  body.linear_damping = 0.0f;
-  body.angular_damping = 0.0f;
-  return body;
-}
-
-BodySettings StaticWorld() {
-  BodySettings body;
-  body.name = "world";
-  body.motion_type = MotionType::kStatic;
-  body.linear_damping = 0.0f;
-  body.angular_damping = 0.0f;
-  return body;
-}
+using scene_bodies::Dynamic;
+using scene_bodies::StaticWorld;
 
 // A rotation of `angle` rad about the unit `axis`, as (x, y, z, w).
 Quaternion AxisAngle(Float3 axis, double angle) {

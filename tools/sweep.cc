@@ -362,7 +362,8 @@ int Sweep(int argc, char** argv) {
     std::fprintf(stderr, "manyworlds: gnuplot failed on %s/sweep.gp\n", config.out.c_str());
     return 1;
   }
-  std::printf("plotted %zu scene(s): %s/<scene>.png\n", config.scenes.size(),
+  std::printf("plotted %zu scene(s): %s/<scene>.png ('/' in an id as '_')\n",
+              config.scenes.size(),
               config.out.c_str());
   return 0;
 }

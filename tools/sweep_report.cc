@@ -148,6 +148,14 @@ constexpr int kMetricCount = int(std::size(kPlotMetrics));
 constexpr int kFirstMetricColumn = 3;
 constexpr int kDefaultColumn = kFirstMetricColumn + kMetricCount;
 
+// A scene id as a file name: '/' (dt-1/15) would name a directory.
+std::string FileNameOf(std::string id) {
+  for (char& c : id) {
+    if (c == '/') c = '_';
+  }
+  return id;
+}
+
 std::string DataLine(const Row& r, int knob_value) {
   const auto number = [](double v) { return std::isnan(v) ? std::string("NaN") : Number(v); };
   std::string line = std::to_string(knob_value) + ' ' + number(r.ns_per_world_step);
@@ -292,7 +300,7 @@ void WriteGnuplot(std::ostream& gp, const std::vector<Row>& rows, const SweepCon
         }
       }
     }
-    gp << "set output '" << scene << ".png'\n"
+    gp << "set output '" << FileNameOf(scene) << ".png'\n"
        << "set multiplot layout " << (panels.size() + 2) / 3 << ",3 title '" << scene
        << ": error against cost, one knob varied at a time from the default (labels: its "
           "value)'\n";
