@@ -78,8 +78,11 @@ class ErrorStats {
     ++count_;
   }
   double Max() const { return non_finite_ ? kNaN : max_; }
+  // A scene without rows of a kind (spin-unstable has no constraint) has no
+  // error of that kind: 0, as Max().
   double Rms() const {
-    return non_finite_ || count_ == 0 ? kNaN : std::sqrt(sum_squares_ / double(count_));
+    if (non_finite_) return kNaN;
+    return count_ == 0 ? 0.0 : std::sqrt(sum_squares_ / double(count_));
   }
 
  private:
