@@ -1,8 +1,8 @@
-// What hinge and slider share for their motor / friction row and their limit
-// row (spec 3): the impulse ranges and velocity bias of a drive, and the
-// impulse range of a limit. The hinge feeds them an angle part, the slider an
-// axis part; both motor structs (AngularMotorLanes, LinearMotorLanes) have
-// the same fields.
+// What the constraints with motor / friction and limit rows share (spec 3:
+// hinge, slider, six-DOF, path, the swing-twist and six-DOF rotation drives):
+// the impulse ranges and velocity bias of a drive, and the impulse range of a
+// limit, for angle and axis parts alike (the motor structs have the same
+// fields); and the lever arms of an axis row from two anchors.
 //
 //   friction:              bias 0,            impulse in dt [-f, f]
 //   velocity motor:        bias -target_v,    impulse in dt [min, max]
@@ -25,6 +25,7 @@
 #include "kernels/angle-inl.h"
 #include "kernels/axis-inl.h"
 #include "kernels/lane_math-inl.h"
+#include "kernels/point.h"  // PointGeometry
 
 HWY_BEFORE_NAMESPACE();
 namespace manyworlds {
@@ -80,6 +81,33 @@ HWY_INLINE void CalculateDriveRowProperties(const BodyPair& bodies, DriveKind dr
   if (!DriveUsesSpring(drive)) return AngleCalculateProperties(bodies, geometry, part);
   AngleCalculatePropertiesForMotor(bodies, geometry, part, delta_time, mode);
   if (drive == DriveKind::kPosition) AngleDeactivate(part, no_spring);
+}
+
+// The lever arms of a row between body 1's anchor and body 2's at the
+// current poses: r1 = R1 r1_local, r2 = R2 r2_local, r1 + u = x2 + r2 - x1
+// (body 1's arm reaching body 2's anchor) and u = p2 - p1.
+struct AnchorLeverArms {
+  Vec3 r1, r2, r1_plus_u, separation;
+};
+HWY_INLINE AnchorLeverArms AnchorLeverArmsOfChunk(const BodyPair& bodies,
+                                                  const PointGeometry& anchors,
+                                                  std::size_t offset) {
+  AnchorLeverArms arms;
+  arms.r1 = Rotate(LoadQuat(bodies.body1->rotation, offset), LoadVec3(anchors.r1_local, offset));
+  arms.r2 = Rotate(LoadQuat(bodies.body2->rotation, offset), LoadVec3(anchors.r2_local, offset));
+  arms.r1_plus_u = Sub(Add(LoadVec3(bodies.body2->position, offset), arms.r2),
+                       LoadVec3(bodies.body1->position, offset));
+  arms.separation = Sub(arms.r1_plus_u, arms.r1);
+  return arms;
+}
+
+// An axis row's lever arms and axis, copied from where its constraint keeps
+// them for this step.
+HWY_INLINE void StoreAxisRow(const Vec3Lanes& r1_plus_u, const Vec3Lanes& r2,
+                             const Vec3Lanes& axis, AxisGeometry& row, std::size_t offset) {
+  StoreVec3(LoadVec3(r1_plus_u, offset), row.r1_plus_u, offset);
+  StoreVec3(LoadVec3(r2, offset), row.r2, offset);
+  StoreVec3(LoadVec3(axis, offset), row.axis, offset);
 }
 
 // Writes a limit row's impulse range: `min_engaged` where the min limit is

@@ -45,9 +45,7 @@ namespace HWY_NAMESPACE {
 // An axis row's lever arms and axis from the path geometry of this step.
 HWY_INLINE void PathAxisRow(const PathConstraintLanes& s, AxisGeometry& row,
                             std::size_t offset) {
-  StoreVec3(LoadVec3(s.dual_geometry.r1_plus_u, offset), row.r1_plus_u, offset);
-  StoreVec3(LoadVec3(s.dual_geometry.r2, offset), row.r2, offset);
-  StoreVec3(LoadVec3(s.tangent, offset), row.axis, offset);
+  StoreAxisRow(s.dual_geometry.r1_plus_u, s.dual_geometry.r2, s.tangent, row, offset);
 }
 
 // Jolt's PathConstraint::CalculateConstraintProperties: the closest point,

@@ -50,17 +50,10 @@ struct SixDofTranslationFrame {
 HWY_INLINE SixDofTranslationFrame SixDofTranslationFrameOfChunk(const BodyPair& bodies,
                                                                 const SixDofConstraintLanes& s,
                                                                 std::size_t offset) {
-  const Quat q1 = LoadQuat(bodies.body1->rotation, offset);
-  const Vec3 x1 = LoadVec3(bodies.body1->position, offset);
-  const Vec3 x2 = LoadVec3(bodies.body2->position, offset);
-  const Vec3 r1 = Rotate(q1, LoadVec3(s.anchors.r1_local, offset));
-  SixDofTranslationFrame frame;
-  frame.r2 = Rotate(LoadQuat(bodies.body2->rotation, offset), LoadVec3(s.anchors.r2_local, offset));
-  frame.r1_plus_u = Sub(Add(x2, frame.r2), x1);
-  frame.separation = Sub(frame.r1_plus_u, r1);
-  frame.axes =
-      RotationMatrix(Mul(q1, LoadQuat(s.frames.constraint_to_body1, offset)));
-  return frame;
+  const AnchorLeverArms arms = AnchorLeverArmsOfChunk(bodies, s.anchors, offset);
+  return {arms.r1_plus_u, arms.r2, arms.separation,
+          RotationMatrix(Mul(LoadQuat(bodies.body1->rotation, offset),
+                             LoadQuat(s.frames.constraint_to_body1, offset)))};
 }
 
 // The translation rows' axes, lever arms and displacements of this step.
@@ -80,9 +73,7 @@ HWY_INLINE void SixDofTranslationGeometry(const ConstraintBlock& c) {
 
 HWY_INLINE void SixDofAxisRow(const SixDofConstraintLanes& s, int i, AxisGeometry& row,
                               std::size_t offset) {
-  StoreVec3(LoadVec3(s.r1_plus_u, offset), row.r1_plus_u, offset);
-  StoreVec3(LoadVec3(s.r2, offset), row.r2, offset);
-  StoreVec3(LoadVec3(s.translation_axis[i], offset), row.axis, offset);
+  StoreAxisRow(s.r1_plus_u, s.r2, s.translation_axis[i], row, offset);
 }
 
 // The limit row of translation axis i from d_i; limited axes are off inside.

@@ -43,16 +43,10 @@ struct SliderFrame {
 HWY_INLINE SliderFrame SliderFrameOfChunk(const BodyPair& bodies,
                                           const SliderConstraintLanes& s,
                                           std::size_t offset) {
-  const Quat q1 = LoadQuat(bodies.body1->rotation, offset);
-  const Vec3 x1 = LoadVec3(bodies.body1->position, offset);
-  const Vec3 x2 = LoadVec3(bodies.body2->position, offset);
-  const Vec3 r1 = Rotate(q1, LoadVec3(s.anchors.r1_local, offset));
-  SliderFrame frame;
-  frame.r2 = Rotate(LoadQuat(bodies.body2->rotation, offset), LoadVec3(s.anchors.r2_local, offset));
-  frame.r1_plus_u = Sub(Add(x2, frame.r2), x1);
-  frame.separation = Sub(frame.r1_plus_u, r1);
-  frame.slider_axis = Rotate(q1, LoadVec3(s.slider_axis1_local, offset));
-  return frame;
+  const AnchorLeverArms arms = AnchorLeverArmsOfChunk(bodies, s.anchors, offset);
+  const Vec3 slider_axis =
+      Rotate(LoadQuat(bodies.body1->rotation, offset), LoadVec3(s.slider_axis1_local, offset));
+  return {arms.r2, arms.separation, arms.r1_plus_u, slider_axis};
 }
 
 // The slider's current position d, for the rack-and-pinion position step.
@@ -83,9 +77,7 @@ HWY_INLINE void SliderGeometry(const ConstraintBlock& c) {
 // An axis row along the slider axis with the lever arms of this step.
 HWY_INLINE void SliderAxisRow(const SliderConstraintLanes& s, AxisGeometry& row,
                               std::size_t offset) {
-  StoreVec3(LoadVec3(s.dual_geometry.r1_plus_u, offset), row.r1_plus_u, offset);
-  StoreVec3(LoadVec3(s.dual_geometry.r2, offset), row.r2, offset);
-  StoreVec3(LoadVec3(s.slider_axis, offset), row.axis, offset);
+  StoreAxisRow(s.dual_geometry.r1_plus_u, s.dual_geometry.r2, s.slider_axis, row, offset);
 }
 
 // The limit row from d; deactivates the lanes inside the limits.
