@@ -9,7 +9,7 @@
 
 #include "batch/constraint_lanes.h"
 #include "kernels/body_lanes.h"
-#include "kernels/hermite_path.h"
+#include "batch/path_frame.h"
 
 namespace manyworlds {
 namespace {
@@ -56,30 +56,6 @@ double AnchorError(const Pose& b1, const Pose& b2, const LaneReader& read,
 
 double RestRotationError(const Pose& b1, const Pose& b2, const Rotation& inv_initial) {
   return RotationAngle(b2.q * inv_initial * b1.q.conjugate());
-}
-
-// The closest point of a path to a point (path space), by the batch's own
-// path kernels (in float, as the step computes it), with its frame.
-struct PathPointOnPath {
-  double fraction;
-  Vector position, tangent;
-  Rotation frame;  // X = tangent, Y = binormal, Z = normal
-};
-PathPointOnPath ClosestPathPoint(const HermitePath& path, const Vector& q) {
-  const HermitePathKernels& kernels = DispatchedKernels<HermitePathKernels>();
-  Vec3Lanes query, position, tangent, normal, binormal;
-  for (std::size_t lane = 0; lane < kLaneWidth; ++lane) {
-    query.x[lane] = float(q.x());
-    query.y[lane] = float(q.y());
-    query.z[lane] = float(q.z());
-  }
-  LaneArray fraction;
-  kernels.closest_point(path, query, fraction);
-  kernels.point_on_path(path, fraction, position, tangent, normal, binormal);
-  const auto lane0 = [](const Vec3Lanes& v) { return Vector(v.x[0], v.y[0], v.z[0]); };
-  Eigen::Matrix3d frame;
-  frame << lane0(tangent), lane0(binormal), lane0(normal);
-  return {fraction[0], lane0(position), lane0(tangent), Rotation(frame).normalized()};
 }
 
 double LimitViolation(double value, double min, double max) {
@@ -298,7 +274,7 @@ double ConstraintErrorOfLane(const StepPlan& plan, const std::byte* block, std::
       const Rotation path_to_world = b1.q * read(s.path_to_body1_rotation);
       const Vector origin = b1.x + b1.q * read(s.path_to_body1_position);
       const Vector attachment = b2.x + b2.q * read(s.attachment_to_body2_position);
-      const PathPointOnPath on_path = ClosestPathPoint(
+      const PathPointFrame on_path = ClosestPathFrame(
           c.Path(), Vector(path_to_world.conjugate() * (attachment - origin)));
       // Off the curve: the separation across the tangent, and along it
       // beyond an end of an open path.
@@ -454,8 +430,8 @@ double ConstraintVelocityErrorOfLane(const StepPlan& plan, const std::byte* bloc
       const Rotation path_to_world = b1.q * read(s.path_to_body1_rotation);
       const Vector origin = b1.x + b1.q * read(s.path_to_body1_position);
       const Vector r2 = b2.q * read(s.attachment_to_body2_position);
-      const PathPointOnPath on_path =
-          ClosestPathPoint(c.Path(), Vector(path_to_world.conjugate() * (b2.x + r2 - origin)));
+      const PathPointFrame on_path =
+          ClosestPathFrame(c.Path(), Vector(path_to_world.conjugate() * (b2.x + r2 - origin)));
       const Vector t = path_to_world * on_path.tangent;
       const Vector rate = PointVelocity(m2, r2) - PointVelocity(m1, b2.x + r2 - b1.x);
       double error = (rate - rate.dot(t) * t).norm();

@@ -14,7 +14,7 @@
 
 #include "batch/constraint_block.h"
 #include "batch/constraint_lanes.h"
-#include "kernels/hermite_path.h"
+#include "batch/path_frame.h"
 
 namespace manyworlds {
 namespace {
@@ -293,18 +293,10 @@ void WritePath(const ConstraintPlan& c, const PathConstraintSettings& s, const F
   Fill(lanes.path_to_body1_rotation, path_rotation);
   Fill(lanes.path_to_body1_position, path_position);
 
-  LaneArray fraction;
-  for (float& f : fraction.lanes) f = s.path_fraction;
-  Vec3Lanes point, tangent, normal, binormal;
-  DispatchedKernels<HermitePathKernels>().point_on_path(c.Path(), fraction, point, tangent,
-                                                          normal, binormal);
-  const auto lane0 = [](const Vec3Lanes& v) { return Vector(v.x[0], v.y[0], v.z[0]); };
-  Eigen::Matrix3d attachment;
-  attachment << lane0(tangent), lane0(binormal), lane0(normal);
-  const Rotation attachment_world =
-      (b1.rotation * path_rotation * Rotation(attachment)).normalized();
+  const PathPointFrame start = PathFrameAt(c.Path(), s.path_fraction);
+  const Rotation attachment_world = (b1.rotation * path_rotation * start.frame).normalized();
   const Vector attachment_position =
-      b1.position + b1.rotation * (path_position + path_rotation * lane0(point));
+      b1.position + b1.rotation * (path_position + path_rotation * start.position);
   Fill(lanes.attachment_to_body2_rotation, (b2.rotation.conjugate() * attachment_world).normalized());
   Fill(lanes.attachment_to_body2_position,
        Vector(b2.rotation.conjugate() * (attachment_position - b2.position)));
