@@ -3,7 +3,7 @@
 //
 //   manyworlds run --scene cartpole --worlds 4096 --steps 1000 [--threads N]
 //                  [--substeps N] [--velocity-iterations N] [--position-iterations N]
-//                  [--warmup N] [--seed N]
+//                  [--warmup N] [--seed N] [--mass-range-limit R]
 //   manyworlds plan --scene ID
 //   manyworlds scenes
 //   manyworlds sweep [--scenes A,B] [--worlds N] [--seconds S] [--small] ... (tools/sweep.h)
@@ -23,6 +23,7 @@
 
 #include "manyworlds/batch.h"
 #include "manyworlds/error.h"
+#include "manyworlds/mass_range.h"
 #include "manyworlds/scene.h"
 #include "manyworlds/scenes.h"
 #include "tools/options.h"
@@ -38,16 +39,18 @@ constexpr const char* kUsage =
     "usage:\n"
     "  manyworlds run --scene ID [--worlds N] [--steps N] [--threads N] [--substeps N]\n"
     "                 [--velocity-iterations N] [--position-iterations N] [--warmup N]\n"
-    "                 [--seed N]\n"
+    "                 [--seed N] [--mass-range-limit R]\n"
     "      steps N worlds of a reference or stress scene and reports throughput and constraint\n"
     "      error (defaults: 4096 worlds, 1000 timed steps after 20 warm-up steps,\n"
     "      threads 0 = every core, 1 substep, 10 velocity and 2 position iterations,\n"
-    "      seed 1 for the actions)\n"
+    "      seed 1 for the actions; --mass-range-limit R > 0 first raises every body\n"
+    "      lighter than 1/R of the heaviest body joined to it through dynamic\n"
+    "      bodies, LimitMassRange, docs/stability.md; 0 = off, the default)\n"
     "  manyworlds plan --scene ID     prints what one step of the scene runs\n"
     "  manyworlds scenes              lists the reference and stress scene ids\n"
     "  manyworlds sweep [--scenes A,B] [--worlds N] [--seconds S] [--threads N]\n"
     "                   [--sample-worlds N] [--passes N] [--min-time S] [--grid knobs|full]\n"
-    "                   [--out DIR] [--seed N] [--small]\n"
+    "                   [--out DIR] [--seed N] [--small] [--mass-range-limit R]\n"
     "      error against run time: steps every scene at each setting of substeps\n"
     "      (1 2 4 8), velocity (1 2 4 8 10) and position iterations (0 1 2), one knob\n"
     "      at a time from 1/10/2 (--grid full: every combination), and writes\n"
@@ -63,6 +66,27 @@ Scene SceneOf(const Options& options) {
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string("--scene: ") + e.what());
   }
+}
+
+// Applies --mass-range-limit R (0 or absent: off) to `scene` and describes
+// what it changed, for the report.
+std::string MassRangeLimitOf(const Options& options, Scene& scene) {
+  const double limit = tools::MassRangeLimitOption(options);
+  if (limit == 0) return "off";
+  double before = 0, after = 0;
+  for (const BodySettings& body : scene.bodies()) {
+    if (body.motion_type == MotionType::kDynamic) before += double(body.mass);
+  }
+  const std::vector<MassRaise> raised = LimitMassRange(scene, float(limit));
+  for (const BodySettings& body : scene.bodies()) {
+    if (body.motion_type == MotionType::kDynamic) after += double(body.mass);
+  }
+  char text[160];
+  std::snprintf(text, sizeof text,
+                "%g: %zu bodies raised, dynamic mass %.4g kg -> %.4g kg (%+.3g %%)",
+                limit, raised.size(), before, after,
+                before > 0 ? 100.0 * (after - before) / before : 0.0);
+  return text;
 }
 
 int Scenes() {
@@ -89,9 +113,10 @@ int Run(int argc, char** argv) {
   const Options options(argc, argv,
                         {"--scene", "--worlds", "--steps", "--threads", "--substeps",
                          "--velocity-iterations", "--position-iterations", "--warmup",
-                         "--seed"});
+                         "--seed", "--mass-range-limit"});
   const std::string id = options.Text("--scene");
-  const Scene scene = SceneOf(options);
+  Scene scene = SceneOf(options);
+  const std::string mass_range = MassRangeLimitOf(options, scene);
   const std::size_t worlds = options.Number("--worlds", 4096, 1, std::uint64_t(1) << 26);
   const std::uint64_t steps = options.Number("--steps", 1000, 1, 1'000'000'000);
   const std::uint64_t warmup = options.Number("--warmup", 20, 0, 1'000'000'000);
@@ -147,6 +172,7 @@ int Run(int argc, char** argv) {
   std::printf("SIMD target:          %s, %zu float lanes per vector\n", batch.SimdTarget(),
               batch.SimdLanes());
   std::printf("precision:            float\n");
+  std::printf("mass-range limit:     %s\n", mass_range.c_str());
   std::printf("iterations:           %d velocity, %d position, %d substep(s), Baumgarte %g\n",
               settings.velocity_iterations, settings.position_iterations, settings.substeps,
               double(settings.baumgarte));

@@ -95,4 +95,14 @@ class Options {
   std::map<std::string, std::string> values_;
 };
 
+// --mass-range-limit R of the run and sweep commands: the max_ratio of
+// LimitMassRange (manyworlds/mass_range.h), at least 1; 0 or absent: off.
+inline double MassRangeLimitOption(const Options& options) {
+  const double limit = options.Real("--mass-range-limit", 0, 0, 1e30);
+  if (limit != 0 && limit < 1) {
+    throw UsageError("--mass-range-limit must be 0 (off) or at least 1");
+  }
+  return limit;
+}
+
 }  // namespace manyworlds::tools

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "manyworlds/batch.h"
+#include "manyworlds/mass_range.h"
 #include "manyworlds/scene.h"
 #include "manyworlds/scenes.h"
 #include "reference/world.h"
@@ -114,7 +115,8 @@ std::vector<std::string> SplitIds(const std::string& text) {
 SweepConfig ConfigOf(int argc, char** argv) {
   const Options options(argc, argv,
                         {"--scenes", "--worlds", "--sample-worlds", "--seconds", "--passes",
-                         "--min-time", "--threads", "--grid", "--out", "--seed"},
+                         "--min-time", "--threads", "--grid", "--out", "--seed",
+                         "--mass-range-limit"},
                         {"--small"});
   SweepConfig config;
   config.small = options.Has("--small");
@@ -146,6 +148,7 @@ SweepConfig ConfigOf(int argc, char** argv) {
   }
   config.full_grid = grid == "full";
   config.seed = options.Number("--seed", 1, 0, UINT64_MAX);
+  config.mass_range_limit = tools::MassRangeLimitOption(options);
   config.out = options.Text("--out", "sweep");
   for (int i = 0; i < argc; ++i) config.command_line += (i ? " " : "") + std::string(argv[i]);
   return config;
@@ -301,7 +304,11 @@ int Sweep(int argc, char** argv) {
   std::vector<Row> rows;
   std::vector<Scene> scenes;
   for (const std::string& id : config.scenes) {
-    const Scene& scene = scenes.emplace_back(MakeScene(id));
+    Scene& scene = scenes.emplace_back(MakeScene(id));
+    // The remedy changes the scene, so the batch and its reference both step
+    // the limited one: the rows are the solver's error on it (the model's
+    // error is docs/stability.md's).
+    if (config.mass_range_limit != 0) LimitMassRange(scene, float(config.mass_range_limit));
     const SceneActions actions(id);
     const std::uint64_t steps = StepsPerRun(config, BaseSettings(id));
     const ReferenceTrajectory reference(scene, actions, FineSettings(id), config.sample_worlds,

@@ -29,6 +29,10 @@
 //             - coupling error |theta1 + r theta2| (gear) or |theta1 - r d2|
 //               (rack and pinion), max and RMS.
 //
+// --mass-range-limit R first applies LimitMassRange(scene, R) to every scene
+// (the remedy of docs/stability.md); batch and reference then step the same
+// limited scene.
+//
 // Writes DIR/sweep.csv (every setting), DIR/sweep.md (the tables) and
 // DIR/sweep.gp, a gnuplot script drawing DIR/<scene>.png: each metric against
 // ns per world-step, one curve per knob. gnuplot runs when it is installed;

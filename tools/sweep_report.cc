@@ -205,6 +205,11 @@ void WriteMarkdown(std::ostream& md, const std::vector<Row>& rows, const SweepCo
     md << "- the tables list the settings on the knobs' curves; sweep.csv has every "
           "combination\n";
   }
+  if (config.mass_range_limit != 0) {
+    md << "- scenes changed by the mass-range limit " << Number(config.mass_range_limit)
+       << " (`LimitMassRange`, docs/stability.md) before stepping; batch and reference step "
+          "the changed scene\n";
+  }
   std::vector<std::string> scenes;
   for (const Row& r : rows) {
     if (std::find(scenes.begin(), scenes.end(), r.scene) == scenes.end()) {

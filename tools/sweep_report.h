@@ -55,6 +55,7 @@ struct SweepConfig {
   bool full_grid = false;
   bool small = false;
   std::uint64_t seed = 0;
+  double mass_range_limit = 0.0;  // LimitMassRange on every scene first; 0: off
   std::filesystem::path out;
   std::string command_line;
 };

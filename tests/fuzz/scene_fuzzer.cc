@@ -1,7 +1,8 @@
 // libFuzzer target: random bytes -> a scene (every motion type, every
-// constraint type of scene.h with random settings), a Batch of a few worlds,
-// then a few steps with random actions, states, resets and per-world
-// parameters written in (NaN, infinities and huge values included).
+// constraint type of scene.h with random settings), sometimes passed through
+// LimitMassRange, a Batch of a few worlds, then a few steps with random
+// actions, states, resets and per-world parameters written in (NaN,
+// infinities and huge values included).
 //
 // What must hold for every input (built with -fsanitize=fuzzer,address,
 // undefined, so any bad access, leak or undefined behaviour aborts):
@@ -24,6 +25,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <iterator>
 #include <limits>
 #include <optional>
@@ -33,6 +35,7 @@
 #include "hwy/targets.h"
 #include "manyworlds/batch.h"
 #include "manyworlds/error.h"
+#include "manyworlds/mass_range.h"
 #include "manyworlds/scene.h"
 
 namespace manyworlds {
@@ -479,6 +482,30 @@ void CheckHealth(const Batch& batch, const StepSettings& settings) {
   Check(unhealthy == batch.UnhealthyWorldCount());
 }
 
+// The mass-range limit with a random ratio: a bad ratio is refused with
+// std::invalid_argument and changes nothing; a good one only ever raises
+// masses, and leaves every body it does not report with its bits.
+void LimitMassRangeChecked(FuzzedDataProvider& in, Scene& scene) {
+  const Scene before = scene;
+  std::vector<MassRaise> raised;
+  try {
+    raised = LimitMassRange(scene, Float(in, 1.0f, 1e6f));
+  } catch (const std::invalid_argument&) {
+  }
+  std::size_t next = 0;
+  for (std::size_t i = 0; i < scene.bodies().size(); ++i) {
+    const float old_mass = before.bodies()[i].mass, new_mass = scene.bodies()[i].mass;
+    const bool reported = next < raised.size() && raised[next].body == i;
+    if (reported) {
+      ++next;
+      if (!(new_mass > old_mass)) __builtin_trap();
+    } else if (std::memcmp(&old_mass, &new_mass, sizeof old_mass) != 0) {
+      __builtin_trap();
+    }
+  }
+  if (next != raised.size()) __builtin_trap();
+}
+
 void Run(FuzzedDataProvider& in) {
   Scene scene;
   const std::size_t bodies = in.ConsumeIntegralInRange<std::size_t>(0, kMaxBodies);
@@ -487,6 +514,7 @@ void Run(FuzzedDataProvider& in) {
   for (std::size_t i = 0; i < constraints; ++i) {
     scene.AddConstraint(Constraint(in, bodies, constraints));
   }
+  if (in.ConsumeBool()) LimitMassRangeChecked(in, scene);
   const std::size_t worlds = in.ConsumeIntegralInRange<std::size_t>(0, kMaxWorlds);
   BatchOptions options;
   options.threads = in.ConsumeIntegralInRange<int>(0, 2);
