@@ -354,8 +354,8 @@ TEST(StressScenes, MassRangeHangingIsNotHeldByJoltsSolver) {
 
 // What the mass-range limit costs: it changes the scene, so its error is how
 // far the 1e6 kg load's path moves with it. The path with limit L against the
-// path with 10 L, largest distance over the first 2 s (the chain snaps taut
-// at about 0.6 s; later the ten-link swing is chaotic and any change grows),
+// path with 10 L, largest distance over the first 2 s (later the ten-link
+// swing is chaotic and any change grows),
 // in the double reference at 64 substeps, where the limited scenes hold their
 // joints to 4 mm (so the solver's own error does not hide the model's).
 // Asserted: raising the limit converges (1e3 -> 1e4 moves the load less than
