@@ -14,9 +14,14 @@
 namespace manyworlds {
 namespace {
 
+// A body whose mass the solver sees: dynamic, a finite positive mass, and
+// free to translate (with every translation locked its inverse mass is 0, so
+// to the joints it is the ground, like a kinematic body).
 bool MassCounts(const BodySettings& body) {
+  constexpr AllowedDofs kTranslation =
+      AllowedDofs::kTranslationX | AllowedDofs::kTranslationY | AllowedDofs::kTranslationZ;
   return body.motion_type == MotionType::kDynamic && std::isfinite(body.mass) &&
-         body.mass > 0.0f;
+         body.mass > 0.0f && (body.allowed_dofs & kTranslation) != AllowedDofs::kNone;
 }
 
 // Groups of bodies with path halving; only bodies whose mass counts are ever
@@ -70,7 +75,7 @@ std::vector<MassRaise> LimitMassRange(Scene& scene, float max_ratio) {
     const double factor = double(floor) / double(body.mass);
     body.mass = floor;
     for (float& moment : body.inertia_diagonal) moment = float(double(moment) * factor);
-    raised.push_back(MassRaise{i, float(factor)});
+    raised.push_back(MassRaise{i, factor});
   }
   return raised;
 }

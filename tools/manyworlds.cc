@@ -43,7 +43,7 @@ constexpr const char* kUsage =
     "      steps N worlds of a reference or stress scene and reports throughput and constraint\n"
     "      error (defaults: 4096 worlds, 1000 timed steps after 20 warm-up steps,\n"
     "      threads 0 = every core, 1 substep, 10 velocity and 2 position iterations,\n"
-    "      seed 1 for the actions; --mass-range-limit R > 0 first raises every body\n"
+    "      seed 1 for the actions; --mass-range-limit R >= 1 first raises every body\n"
     "      lighter than 1/R of the heaviest body joined to it through dynamic\n"
     "      bodies, LimitMassRange, docs/stability.md; 0 = off, the default)\n"
     "  manyworlds plan --scene ID     prints what one step of the scene runs\n"

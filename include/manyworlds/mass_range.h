@@ -25,7 +25,7 @@ namespace manyworlds {
 // One body whose mass LimitMassRange raised.
 struct MassRaise {
   std::size_t body = 0;
-  float factor = 1.0f;  // new mass / old mass; its inertia got the same factor
+  double factor = 1.0;  // new mass / old mass; its inertia got the same factor
 };
 
 // Within every group of dynamic bodies that constraints join, raises each
@@ -34,8 +34,10 @@ struct MassRaise {
 // so its centre of mass, principal axes and shape stay. Static and kinematic
 // bodies join no group (they do not pass impulses on: every constraint to
 // them is a constraint to the ground), so bodies of different groups never
-// change each other. Returns the raised bodies in index order (none when the
-// scene is already within the range).
+// change each other; nor do dynamic bodies that allow no translation (their
+// inverse mass is 0: to the joints they are the ground too). Returns the
+// raised bodies in index order (none when the scene is already within the
+// range).
 //
 // Throws std::invalid_argument naming max_ratio unless it is finite and >= 1.
 // Bodies with a mass that is not finite and positive, and constraints with a

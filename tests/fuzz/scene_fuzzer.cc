@@ -484,7 +484,8 @@ void CheckHealth(const Batch& batch, const StepSettings& settings) {
 
 // The mass-range limit with a random ratio: a bad ratio is refused with
 // std::invalid_argument and changes nothing; a good one only ever raises
-// masses, and leaves every body it does not report with its bits.
+// masses, and leaves the mass and inertia bits of every body it does not
+// report.
 void LimitMassRangeChecked(FuzzedDataProvider& in, Scene& scene) {
   const Scene before = scene;
   std::vector<MassRaise> raised;
@@ -499,7 +500,10 @@ void LimitMassRangeChecked(FuzzedDataProvider& in, Scene& scene) {
     if (reported) {
       ++next;
       if (!(new_mass > old_mass)) __builtin_trap();
-    } else if (std::memcmp(&old_mass, &new_mass, sizeof old_mass) != 0) {
+    } else if (std::memcmp(&old_mass, &new_mass, sizeof old_mass) != 0 ||
+               std::memcmp(before.bodies()[i].inertia_diagonal.data(),
+                           scene.bodies()[i].inertia_diagonal.data(),
+                           sizeof(Float3)) != 0) {
       __builtin_trap();
     }
   }
