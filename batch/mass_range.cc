@@ -18,10 +18,8 @@ namespace {
 // free to translate (with every translation locked its inverse mass is 0, so
 // to the joints it is the ground, like a kinematic body).
 bool MassCounts(const BodySettings& body) {
-  constexpr AllowedDofs kTranslation =
-      AllowedDofs::kTranslationX | AllowedDofs::kTranslationY | AllowedDofs::kTranslationZ;
   return body.motion_type == MotionType::kDynamic && std::isfinite(body.mass) &&
-         body.mass > 0.0f && (body.allowed_dofs & kTranslation) != AllowedDofs::kNone;
+         body.mass > 0.0f && AllowsTranslation(body.allowed_dofs);
 }
 
 // Groups of bodies with path halving; only bodies whose mass counts are ever

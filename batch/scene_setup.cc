@@ -63,8 +63,8 @@ Vector Locked(const Vector& v, const Vector& mask) {
   return Vector(mask.x() != 0.0 ? v.x() : 0.0, mask.y() != 0.0 ? v.y() : 0.0,
                 mask.z() != 0.0 ? v.z() : 0.0);
 }
-bool CanTranslate(const BodySettings& body) { return (Dofs(body) & 7u) != 0; }
-bool CanRotate(const BodySettings& body) { return (Dofs(body) & 56u) != 0; }
+bool CanTranslate(const BodySettings& body) { return AllowsTranslation(body.allowed_dofs); }
+bool CanRotate(const BodySettings& body) { return AllowsRotation(body.allowed_dofs); }
 
 // Jolt's MotionProperties::SetMassProperties: m^-1 = 0 without any allowed
 // translation (so auto-detected anchors and the parts see an immovable body).

@@ -112,8 +112,8 @@ Body<T> MakeBody(const BodySettings& settings) {
   // Allowed DOFs (spec 4.3): bits 0-2 translation X/Y/Z, bits 3-5 rotation X/Y/Z.
   // A static body never moves, so it keeps the all-allowed masks.
   const unsigned dofs = static_cast<unsigned>(settings.allowed_dofs);
-  const bool can_translate = (dofs & 7u) != 0;
-  const bool can_rotate = (dofs & 56u) != 0;
+  const bool can_translate = AllowsTranslation(settings.allowed_dofs);
+  const bool can_rotate = AllowsRotation(settings.allowed_dofs);
   if (settings.motion_type != MotionType::kStatic) {
     for (int axis = 0; axis < 3; ++axis) {
       body.translation_mask[axis] = (dofs >> axis) & 1u ? T(1) : T(0);

@@ -7,8 +7,8 @@
 // unstable-axis spin is compared with the exact motion. Where Jolt's
 // algorithm fails a bound at the default settings, the test asserts the
 // bound with the remedy docs/stability.md names (substeps, the gyroscopic
-// step, the mass-range limit) and prints both. Every run prints "figures" lines (also recorded as
-// test properties) that docs/stability.md quotes:
+// step, the mass-range limit) and prints both. Every run prints "figures"
+// lines (also recorded as test properties) that docs/stability.md quotes:
 //
 //   ./build/tests/stress_test | grep figures
 //
@@ -355,9 +355,9 @@ TEST(StressScenes, MassRangeHangingIsNotHeldByJoltsSolver) {
 // What the mass-range limit costs: it changes the scene, so its error is how
 // far the 1e6 kg load's path moves with it. The path with limit L against the
 // path with 10 L, largest distance over the first 2 s (later the ten-link
-// swing is chaotic and any change grows),
-// in the double reference at 64 substeps, where the limited scenes hold their
-// joints to 4 mm (so the solver's own error does not hide the model's).
+// swing is chaotic and any change grows), in the double reference at 64
+// substeps, where the limited scenes hold their joints to 4 mm (so the
+// solver's own error does not hide the model's).
 // Asserted: raising the limit converges (1e3 -> 1e4 moves the load less than
 // half as far as 1e2 -> 1e3), and the remedy's limit 1e3 moves it less than
 // kChainJointError, the solver error the remedies are held to. The figures

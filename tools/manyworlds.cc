@@ -73,14 +73,16 @@ Scene SceneOf(const Options& options) {
 std::string MassRangeLimitOf(const Options& options, Scene& scene) {
   const double limit = tools::MassRangeLimitOption(options);
   if (limit == 0) return "off";
-  double before = 0, after = 0;
-  for (const BodySettings& body : scene.bodies()) {
-    if (body.motion_type == MotionType::kDynamic) before += double(body.mass);
-  }
+  const auto dynamic_mass = [&scene] {
+    double sum = 0;
+    for (const BodySettings& body : scene.bodies()) {
+      if (body.motion_type == MotionType::kDynamic) sum += double(body.mass);
+    }
+    return sum;
+  };
+  const double before = dynamic_mass();
   const std::vector<MassRaise> raised = LimitMassRange(scene, float(limit));
-  for (const BodySettings& body : scene.bodies()) {
-    if (body.motion_type == MotionType::kDynamic) after += double(body.mass);
-  }
+  const double after = dynamic_mass();
   char text[160];
   std::snprintf(text, sizeof text,
                 "%g: %zu bodies raised, dynamic mass %.4g kg -> %.4g kg (%+.3g %%)",

@@ -51,6 +51,16 @@ constexpr AllowedDofs operator|(AllowedDofs a, AllowedDofs b) {
 constexpr AllowedDofs operator&(AllowedDofs a, AllowedDofs b) {
   return static_cast<AllowedDofs>(static_cast<std::uint8_t>(a) & static_cast<std::uint8_t>(b));
 }
+// Whether any translation (any rotation) axis is allowed: without one the
+// body's inverse mass (inverse inertia) is 0.
+constexpr bool AllowsTranslation(AllowedDofs dofs) {
+  return (dofs & (AllowedDofs::kTranslationX | AllowedDofs::kTranslationY |
+                  AllowedDofs::kTranslationZ)) != AllowedDofs::kNone;
+}
+constexpr bool AllowsRotation(AllowedDofs dofs) {
+  return (dofs & (AllowedDofs::kRotationX | AllowedDofs::kRotationY |
+                  AllowedDofs::kRotationZ)) != AllowedDofs::kNone;
+}
 
 struct BodySettings {
   std::string name;  // used in error messages and the printed plan
