@@ -11,7 +11,6 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <mutex>
 #include <vector>
 
 #include "hwy/targets.h"
@@ -40,26 +39,26 @@ const Table* KernelsForTarget(std::int64_t target) {
 
 namespace detail {
 
-// One lock for every table type: the target restriction below is global.
-inline std::mutex& TargetRestrictionMutex() {
-  static std::mutex mutex;
-  return mutex;
+// The slot of `target` in a table made by HWY_EXPORT: Highway's own layout
+// (hwy/targets.h, HWY_CHOSEN_TARGET_SHIFT): slot 0 initialises dispatch, then
+// one slot per dynamic target, best first, then the fallback (SCALAR or
+// EMU128). Reading a slot changes nothing global, unlike restricting
+// Highway's supported targets, which raced with every other thread's dispatch
+// (a Batch built meanwhile could get a slower target's kernels).
+inline std::size_t DispatchSlot(std::int64_t target) {
+  const std::int64_t dynamic = HWY_CHOSEN_TARGET_SHIFT(target);
+  if (dynamic == 0) return HWY_MAX_DYNAMIC_TARGETS + 1;  // the fallback
+  return hwy::Num0BitsBelowLS1Bit_Nonzero64(static_cast<std::uint64_t>(dynamic));
 }
 
-// Highway only dispatches to its chosen target; to reach the others we
-// restrict the supported set to one target at a time (the mechanism of
-// Highway's own per-target tests), then restore normal dispatch. Serialised,
-// because the restriction is global; each table collects once (on first use),
-// so do that before starting threads that dispatch Highway code themselves.
-template <class Table, class Dispatch>
-std::vector<const Table*> CollectSupportedTables(Dispatch dispatch) {
-  const std::lock_guard<std::mutex> lock(TargetRestrictionMutex());
+// The tables of every target compiled here that this CPU runs, best first.
+template <class Table, class Getter>
+std::vector<const Table*> CollectSupportedTables(Getter* const* dispatch_table) {
   std::vector<const Table*> tables;
   for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
-    hwy::SetSupportedTargetsForTest(target);
-    tables.push_back(dispatch());
+    Getter* const getter = dispatch_table[DispatchSlot(target)];
+    if (getter != nullptr) tables.push_back(getter());
   }
-  hwy::SetSupportedTargetsForTest(0);
   return tables;
 }
 
@@ -75,18 +74,19 @@ std::vector<const Table*> CollectSupportedTables(Dispatch dispatch) {
 
 // In a part's _kernels.cc, inside namespace manyworlds under HWY_ONCE, where
 // `getter` is the per-target function returning that target's table.
+// The dispatched table is the first (best) supported one, as Highway's own
+// dispatch would pick, so no call here touches Highway's global state.
 #define MANYWORLDS_EXPORT_KERNEL_TABLE(Table, getter)                     \
   HWY_EXPORT(getter);                                                    \
   template <>                                                            \
-  const Table& DispatchedKernels<Table>() {                              \
-    return *HWY_DYNAMIC_DISPATCH(getter)();                              \
-  }                                                                      \
-  template <>                                                            \
   const std::vector<const Table*>& SupportedKernels<Table>() {           \
     static const std::vector<const Table*> tables =                      \
-        detail::CollectSupportedTables<Table>(                           \
-            [] { return HWY_DYNAMIC_DISPATCH(getter)(); });              \
+        detail::CollectSupportedTables<Table>(HWY_DISPATCH_TABLE(getter)); \
     return tables;                                                       \
+  }                                                                      \
+  template <>                                                            \
+  const Table& DispatchedKernels<Table>() {                              \
+    return *SupportedKernels<Table>().front();                           \
   }
 
 // In a part's _kernels.cc, inside HWY_NAMESPACE: this target's TargetInfo.
