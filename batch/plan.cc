@@ -8,6 +8,7 @@
 #include <type_traits>
 
 #include "batch/constraint_lanes.h"
+#include "batch/scene_checks.h"
 #include "kernels/body_lanes.h"
 #include "manyworlds/error.h"
 #include "manyworlds/lanes.h"
@@ -34,141 +35,6 @@ const char* SettingsTypeName(const ConstraintSettings& settings) {
         if constexpr (std::is_same_v<S, PathConstraintSettings>) return "path";
       },
       settings);
-}
-
-// Raises SceneError "<what>: <field> <problem>".
-[[noreturn]] void Refuse(const std::string& what, const std::string& field,
-                         const std::string& problem) {
-  throw SceneError(what + ": " + field + " " + problem);
-}
-
-bool Finite(float x) { return std::isfinite(x); }
-bool Finite(const Float3& v) { return Finite(v[0]) && Finite(v[1]) && Finite(v[2]); }
-bool Finite(const Quaternion& q) {
-  return Finite(q[0]) && Finite(q[1]) && Finite(q[2]) && Finite(q[3]);
-}
-double Length(const Float3& v) {
-  return std::sqrt(double(v[0]) * v[0] + double(v[1]) * v[1] + double(v[2]) * v[2]);
-}
-
-void CheckFinite(const std::string& what, const std::string& field, float x) {
-  if (!Finite(x)) Refuse(what, field, "is not finite (" + std::to_string(x) + ")");
-}
-void CheckFinite(const std::string& what, const std::string& field, const Float3& v) {
-  if (!Finite(v)) Refuse(what, field, "has a non-finite component");
-}
-
-// A direction: finite and not zero (it is normalised when the batch is built).
-void CheckAxis(const std::string& what, const std::string& field, const Float3& axis) {
-  CheckFinite(what, field, axis);
-  if (Length(axis) < 1e-6) Refuse(what, field, "is zero (a direction is needed)");
-}
-
-// Two axes of one frame: each a direction (CheckAxis), and perpendicular to
-// each other (Jolt asserts it).
-void CheckFrameAxes(const std::string& what, const std::string& first, const Float3& a,
-                    const std::string& second, const Float3& b) {
-  CheckAxis(what, first, a);
-  CheckAxis(what, second, b);
-  const double dot = (double(a[0]) * b[0] + double(a[1]) * b[1] + double(a[2]) * b[2]) /
-                     (Length(a) * Length(b));
-  if (std::abs(dot) > 1e-3) {
-    Refuse(what, first + " and " + second,
-           "are not perpendicular (cosine " + std::to_string(dot) + ")");
-  }
-}
-
-void CheckBody(const BodySettings& body, const std::string& what) {
-  CheckFinite(what, "position", body.position);
-  CheckFinite(what, "linear_velocity", body.linear_velocity);
-  CheckFinite(what, "angular_velocity", body.angular_velocity);
-  if (!Finite(body.rotation)) Refuse(what, "rotation", "has a non-finite component");
-  const double norm = std::sqrt(double(body.rotation[0]) * body.rotation[0] +
-                                double(body.rotation[1]) * body.rotation[1] +
-                                double(body.rotation[2]) * body.rotation[2] +
-                                double(body.rotation[3]) * body.rotation[3]);
-  if (norm < 1e-6) Refuse(what, "rotation", "is a zero quaternion");
-  const unsigned dofs = static_cast<unsigned>(body.allowed_dofs);
-  if ((dofs & ~static_cast<unsigned>(AllowedDofs::kAll)) != 0) {
-    Refuse(what, "allowed_dofs", "has bits outside AllowedDofs::kAll (got " +
-                                     std::to_string(dofs) + ")");
-  }
-  if (body.motion_type != MotionType::kDynamic) return;
-  if (dofs == 0) {
-    Refuse(what, "allowed_dofs",
-           "must allow at least one degree of freedom for a dynamic body (got none; "
-           "make the body static instead)");
-  }
-  if (!Finite(body.mass) || body.mass <= 0.0f) {
-    Refuse(what, "mass", "must be finite and positive for a dynamic body (got " +
-                             std::to_string(body.mass) + ")");
-  }
-  for (int i = 0; i < 3; ++i) {
-    if (!Finite(body.inertia_diagonal[i]) || body.inertia_diagonal[i] <= 0.0f) {
-      Refuse(what, "inertia_diagonal[" + std::to_string(i) + "]",
-             "must be finite and positive for a dynamic body (got " +
-                 std::to_string(body.inertia_diagonal[i]) + ")");
-    }
-  }
-  if (!Finite(body.inertia_rotation)) {
-    Refuse(what, "inertia_rotation", "has a non-finite component");
-  }
-  // Eigen normalises a zero quaternion to zero, which would silently give
-  // the body a wrong (not rotated, or zero) inverse inertia.
-  const Quaternion& r = body.inertia_rotation;
-  if (std::sqrt(double(r[0]) * r[0] + double(r[1]) * r[1] + double(r[2]) * r[2] +
-                double(r[3]) * r[3]) < 1e-6) {
-    Refuse(what, "inertia_rotation", "is a zero quaternion");
-  }
-  const auto non_negative = [&](const char* field, float x) {
-    if (!Finite(x) || x < 0.0f) Refuse(what, field, "must be finite and >= 0");
-  };
-  non_negative("linear_damping", body.linear_damping);
-  non_negative("angular_damping", body.angular_damping);
-  const auto positive = [&](const char* field, float x) {
-    if (!(x > 0.0f)) Refuse(what, field, "must be positive");
-  };
-  positive("max_linear_velocity", body.max_linear_velocity);
-  positive("max_angular_velocity", body.max_angular_velocity);
-  CheckFinite(what, "gravity_factor", body.gravity_factor);
-}
-
-void CheckSpring(const std::string& what, const std::string& field,
-                 const SpringSettings& spring) {
-  if (!Finite(spring.frequency_or_stiffness) || !Finite(spring.damping) ||
-      spring.damping < 0.0f) {
-    Refuse(what, field, "must have a finite frequency or stiffness and a finite damping >= 0");
-  }
-}
-
-void CheckMotor(const std::string& what, MotorState state, const MotorSettings& motor,
-                float max_friction, const std::string& friction_field,
-                const std::string& motor_field = "motor") {
-  if (!Finite(max_friction) || max_friction < 0.0f) {
-    Refuse(what, friction_field, "must be finite and >= 0");
-  }
-  if (std::isnan(motor.min_force_limit) || std::isnan(motor.max_force_limit) ||
-      motor.min_force_limit > motor.max_force_limit) {
-    Refuse(what, motor_field + ".min_force_limit / max_force_limit",
-           "must be ordered, min <= max");
-  }
-  CheckSpring(what, motor_field + ".spring", motor.spring);
-  if (state == MotorState::kPosition && !motor.spring.HasStiffness()) {
-    Refuse(what, motor_field + ".spring",
-           "needs a positive frequency or stiffness for a position motor");
-  }
-  if (state == MotorState::kPositionAndVelocity && !motor.spring.HasStiffnessOrDamping()) {
-    Refuse(what, motor_field + ".spring",
-           "needs stiffness or damping for a position-and-velocity motor");
-  }
-}
-
-void CheckOrientation(const std::string& what, const std::string& field, const Quaternion& q) {
-  if (!Finite(q)) Refuse(what, field, "has a non-finite component");
-  if (std::sqrt(double(q[0]) * q[0] + double(q[1]) * q[1] + double(q[2]) * q[2] +
-                double(q[3]) * q[3]) < 1e-6) {
-    Refuse(what, field, "is a zero quaternion");
-  }
 }
 
 DriveKind DriveOf(MotorState state, float max_friction) {
@@ -263,8 +129,13 @@ void PlanSixDof(const std::string& what, const SixDofConstraintSettings& s,
   CheckFrameAxes(what, "axis_x2", s.axis_x2, "axis_y2", s.axis_y2);
   const auto indexed = IndexedField;
   for (std::size_t i = 0; i < kSixDofAxes; ++i) {
-    if (std::isnan(s.limit_min[i])) Refuse(what, indexed("limit_min", i), "is NaN");
-    if (std::isnan(s.limit_max[i])) Refuse(what, indexed("limit_max", i), "is NaN");
+    if (i < 3) {
+      CheckTranslationLimits(what, indexed("limit_min", i), indexed("limit_max", i),
+                             s.limit_min[i], s.limit_max[i], false);
+    } else {
+      if (std::isnan(s.limit_min[i])) Refuse(what, indexed("limit_min", i), "is NaN");
+      if (std::isnan(s.limit_max[i])) Refuse(what, indexed("limit_max", i), "is NaN");
+    }
     CheckMotor(what, s.motor_state[i], s.motor[i], s.max_friction[i],
                indexed("max_friction", i), indexed("motor", i));
   }
@@ -465,6 +336,9 @@ SixDofLimits NormalizedSixDofLimits(const SixDofConstraintSettings& s) {
   SixDofLimits limits{s.limit_min, s.limit_max};
   for (std::size_t i = 0; i < 3; ++i) {
     if (limits.min[i] > limits.max[i]) limits.min[i] = limits.max[i] = 0.0f;
+    // No bound on that side (CheckTranslationLimits refused the other side's).
+    if (limits.min[i] <= -kMaxHealthyCoordinate) limits.min[i] = -FLT_MAX;
+    if (limits.max[i] >= kMaxHealthyCoordinate) limits.max[i] = FLT_MAX;
   }
   if (s.swing_type == SwingType::kCone) {
     for (std::size_t i = 4; i < 6; ++i) {
@@ -488,18 +362,32 @@ AxisLimitKind SixDofAxisKind(const SixDofLimits& limits, std::size_t axis) {
 }
 
 void CheckStepSettings(const StepSettings& s) {
-  if (!(s.delta_time > 0.0f) || !std::isfinite(s.delta_time)) {
-    Refuse("step settings", "delta_time", "must be finite and positive");
+  const std::string what = "step settings";
+  if (!(s.substeps >= 1 && s.substeps <= kMaxSubsteps)) {
+    Refuse(what, "substeps", "must lie in [1, " + std::to_string(kMaxSubsteps) + "] (got " +
+                                 std::to_string(s.substeps) + ")");
   }
-  if (s.substeps < 1) Refuse("step settings", "substeps", "must be at least 1");
-  if (s.velocity_iterations < 0) {
-    Refuse("step settings", "velocity_iterations", "must be >= 0");
+  // Checked per substep: that is what 1/dt and the warm-start ratio see.
+  const float substep = s.delta_time / static_cast<float>(s.substeps);
+  if (!(substep >= kMinSubstepDeltaTime && substep <= kMaxSubstepDeltaTime)) {
+    Refuse(what, "delta_time",
+           "/ substeps must lie in [1e-6, 1] s (got " + ValueText(s.delta_time) + " / " +
+               std::to_string(s.substeps) + ")");
   }
-  if (s.position_iterations < 0) {
-    Refuse("step settings", "position_iterations", "must be >= 0");
-  }
+  const auto iterations = [&](const char* field, int n) {
+    if (!(n >= 0 && n <= kMaxIterations)) {
+      Refuse(what, field, "must lie in [0, " + std::to_string(kMaxIterations) + "] (got " +
+                              std::to_string(n) + ")");
+    }
+  };
+  iterations("velocity_iterations", s.velocity_iterations);
+  iterations("position_iterations", s.position_iterations);
   if (!std::isfinite(s.baumgarte) || s.baumgarte < 0.0f) {
-    Refuse("step settings", "baumgarte", "must be finite and >= 0");
+    Refuse(what, "baumgarte", "must be finite and >= 0");
+  }
+  if (static_cast<unsigned>(s.unhealthy_worlds) > static_cast<unsigned>(UnhealthyWorlds::kReset)) {
+    Refuse(what, "unhealthy_worlds", "is not an UnhealthyWorlds (got " +
+                                         std::to_string(unsigned(s.unhealthy_worlds)) + ")");
   }
   CheckFinite("step settings", "gravity", s.gravity);
 }
@@ -529,7 +417,14 @@ StepPlan CompilePlan(const Scene& scene) {
     const std::string what = ConstraintLabel(scene, index);
     ConstraintPlan c;
     c.label = what;
-    std::visit([&](const auto& s) { c.body1 = s.body1; c.body2 = s.body2; }, settings);
+    std::visit(
+        [&](const auto& s) {
+          c.body1 = s.body1;
+          c.body2 = s.body2;
+          if constexpr (requires { s.space; }) CheckConstraintSpace(what, s.space);
+          if constexpr (requires { s.swing_type; }) CheckSwingType(what, s.swing_type);
+        },
+        settings);
     if (c.body1 >= body_count) {
       Refuse(what, "body1", "is " + std::to_string(c.body1) + ", but the scene has " +
                                 std::to_string(body_count) + " bodies");
@@ -571,14 +466,7 @@ StepPlan CompilePlan(const Scene& scene) {
             CheckFinite(what, "point2", s.point2);
             CheckFrameAxes(what, "hinge_axis1", s.hinge_axis1, "normal_axis1", s.normal_axis1);
             CheckFrameAxes(what, "hinge_axis2", s.hinge_axis2, "normal_axis2", s.normal_axis2);
-            if (!(s.limits_min >= -kPi && s.limits_min <= 0.0f)) {
-              Refuse(what, "limits_min", "must lie in [-pi, 0] (got " +
-                                             std::to_string(s.limits_min) + ")");
-            }
-            if (!(s.limits_max >= 0.0f && s.limits_max <= kPi)) {
-              Refuse(what, "limits_max", "must lie in [0, pi] (got " +
-                                             std::to_string(s.limits_max) + ")");
-            }
+            CheckHingeLimits(what, s.limits_min, s.limits_max);
             CheckMotor(what, s.motor_state, s.motor, s.max_friction_torque,
                        "max_friction_torque");
             CheckSpring(what, "limits_spring", s.limits_spring);
@@ -599,14 +487,8 @@ StepPlan CompilePlan(const Scene& scene) {
             CheckFinite(what, "point2", s.point2);
             CheckFrameAxes(what, "slider_axis1", s.slider_axis1, "normal_axis1", s.normal_axis1);
             CheckFrameAxes(what, "slider_axis2", s.slider_axis2, "normal_axis2", s.normal_axis2);
-            if (std::isnan(s.limits_min) || s.limits_min > 0.0f) {
-              Refuse(what, "limits_min", "must be <= 0 (got " +
-                                             std::to_string(s.limits_min) + ")");
-            }
-            if (std::isnan(s.limits_max) || s.limits_max < 0.0f) {
-              Refuse(what, "limits_max", "must be >= 0 (got " +
-                                             std::to_string(s.limits_max) + ")");
-            }
+            const LimitRange limits = CheckTranslationLimits(
+                what, "limits_min", "limits_max", s.limits_min, s.limits_max, true);
             if (s.auto_detect_point && s.space != ConstraintSpace::kWorldSpace) {
               Refuse(what, "auto_detect_point", "needs space = kWorldSpace");
             }
@@ -617,7 +499,7 @@ StepPlan CompilePlan(const Scene& scene) {
             CheckFinite(what, "target_position", s.target_position);
             c.type = ConstraintType::kSlider;
             c.offset = layout.Add<SliderConstraintLanes>();
-            if (s.limits_min != -FLT_MAX || s.limits_max != FLT_MAX) {
+            if (limits.min != -FLT_MAX || limits.max != FLT_MAX) {
               c.limit_offset = layout.Add<LinearLimitLanes>();
               c.soft_limits = s.limits_spring.HasStiffness();
               c.limit_spring_mode = s.limits_spring.mode;

@@ -15,6 +15,7 @@
 #include "batch/constraint_block.h"
 #include "batch/constraint_lanes.h"
 #include "batch/path_frame.h"
+#include "batch/scene_checks.h"
 
 namespace manyworlds {
 namespace {
@@ -63,13 +64,12 @@ Vector Locked(const Vector& v, const Vector& mask) {
   return Vector(mask.x() != 0.0 ? v.x() : 0.0, mask.y() != 0.0 ? v.y() : 0.0,
                 mask.z() != 0.0 ? v.z() : 0.0);
 }
-bool CanTranslate(const BodySettings& body) { return AllowsTranslation(body.allowed_dofs); }
 bool CanRotate(const BodySettings& body) { return AllowsRotation(body.allowed_dofs); }
 
 // Jolt's MotionProperties::SetMassProperties: m^-1 = 0 without any allowed
 // translation (so auto-detected anchors and the parts see an immovable body).
 double InverseMass(const BodySettings& body) {
-  return body.motion_type == MotionType::kDynamic && CanTranslate(body) ? 1.0 / body.mass : 0.0;
+  return InverseMassPropertiesOf(body, body.mass, body.inertia_diagonal).inv_mass;
 }
 
 struct Pose {
@@ -163,11 +163,12 @@ void WriteBodies(const Scene& scene, const StepPlan& plan, std::byte* block) {
     Fill(lanes.angular_velocity, is_static ? Vector::Zero()
                                            : Locked(ToVector(body.angular_velocity),
                                                     rotation_mask));
-    Fill(lanes.inv_mass, InverseMass(body));
+    const InverseMassProperties inverse =
+        InverseMassPropertiesOf(body, body.mass, body.inertia_diagonal);
+    Fill(lanes.inv_mass, inverse.inv_mass);
     // D = 0 and an identity inertia rotation without any allowed rotation (Jolt).
     const bool rotates = dynamic && CanRotate(body);
-    const Vector inertia = ToVector(body.inertia_diagonal);
-    Fill(lanes.inv_inertia_diagonal, rotates ? Vector(inertia.cwiseInverse()) : Vector::Zero());
+    Fill(lanes.inv_inertia_diagonal, ToVector(inverse.inv_inertia_diagonal));
     Fill(lanes.inertia_rotation,
          dynamic && !rotates ? Rotation::Identity() : ToRotation(body.inertia_rotation));
     if (plan.bodies[i].motion_offset == kAbsent) continue;
@@ -387,14 +388,17 @@ void WriteConstraint(const ConstraintPlan& c, const ConstraintSettings& settings
                InverseInitialOrientation(
                    FrameRotation(slider1, normal1),
                    FrameRotation(frames.Axis2(s.slider_axis2), frames.Axis2(s.normal_axis2))));
+          // Bounds at or beyond 2^24 m are "none", FLT_MAX (CheckTranslationLimits).
+          const LimitRange limits = CheckTranslationLimits(
+              c.label, "limits_min", "limits_max", s.limits_min, s.limits_max, true);
           if (c.has_limits()) {
-            WriteLimit(At<LinearLimitLanes>(block, c.limit_offset), s.limits_min, s.limits_max,
+            WriteLimit(At<LinearLimitLanes>(block, c.limit_offset), limits.min, limits.max,
                        s.limits_spring);
           }
           if (c.has_motor()) {
-            const float target =
-                c.has_limits() ? std::clamp(s.target_position, s.limits_min, s.limits_max)
-                               : s.target_position;
+            const float target = c.has_limits()
+                                     ? std::clamp(s.target_position, limits.min, limits.max)
+                                     : s.target_position;
             WriteMotor(At<LinearMotorLanes>(block, c.motor_offset), s.motor, s.target_velocity,
                        target, s.max_friction_force);
           }
@@ -473,6 +477,20 @@ void WriteConstraint(const ConstraintPlan& c, const ConstraintSettings& settings
 }
 
 }  // namespace
+
+InverseMassProperties InverseMassPropertiesOf(const BodySettings& body, float mass,
+                                              const Float3& inertia_diagonal) {
+  const bool dynamic = body.motion_type == MotionType::kDynamic;
+  const bool translates = dynamic && AllowsTranslation(body.allowed_dofs);
+  const bool rotates = dynamic && AllowsRotation(body.allowed_dofs);
+  // Divided in double, then rounded once, as the scene always has been.
+  const auto inverse = [](bool allowed, float x) {
+    return allowed ? static_cast<float>(1.0 / double(x)) : 0.0f;
+  };
+  return {inverse(translates, mass),
+          {inverse(rotates, inertia_diagonal[0]), inverse(rotates, inertia_diagonal[1]),
+           inverse(rotates, inertia_diagonal[2])}};
+}
 
 void WriteInitialBlock(const Scene& scene, const StepPlan& plan, std::byte* block) {
   WriteBodies(scene, plan, block);

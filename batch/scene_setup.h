@@ -15,4 +15,16 @@ namespace manyworlds {
 // `block` holds plan.block_bytes bytes, 64-byte aligned, zeroed.
 void WriteInitialBlock(const Scene& scene, const StepPlan& plan, std::byte* block);
 
+// A body's inverse mass and inverse principal inertia as a block holds them
+// for the given mass properties (Jolt's SetMassProperties): 0 for a
+// non-dynamic body, and without any allowed translation (rotation). Shared by
+// the scene and Batch::SetMassProperties, so that one mass gives the same
+// bits either way.
+struct InverseMassProperties {
+  float inv_mass;
+  Float3 inv_inertia_diagonal;
+};
+InverseMassProperties InverseMassPropertiesOf(const BodySettings& body, float mass,
+                                              const Float3& inertia_diagonal);
+
 }  // namespace manyworlds

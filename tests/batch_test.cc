@@ -622,6 +622,13 @@ TEST(BatchTest, ReadmeExampleRuns) {
   batch.GetState(after);
   EXPECT_EQ(after[(7 * batch.body_count() + p) * kStateFloatsPerBody + 12], 0.0f);
   EXPECT_EQ(after[(8 * batch.body_count() + p) * kStateFloatsPerBody + 12], spin);
+
+  const BatchSnapshot saved = batch.Snapshot();
+  batch.Step(StepSettings{});
+  batch.Restore(saved);
+  std::vector<float> restored(state.size());
+  batch.GetState(restored);
+  EXPECT_EQ(restored, after);
 }
 
 }  // namespace

@@ -14,7 +14,9 @@
 #include <string>
 #include <vector>
 
+#include "hwy/targets.h"
 #include "manyworlds/batch.h"
+#include "manyworlds/error.h"
 #include "manyworlds/scenes.h"
 
 namespace manyworlds {
@@ -173,6 +175,31 @@ TEST_P(DeterminismTest, ResettingOrChangingOneWorldLeavesTheOthersBitIdentical) 
       EXPECT_TRUE(SameWorld(a, w, b, w, per_world)) << "world " << w << " changed";
     }
   }
+}
+
+// AVX3 (16 lanes) and AVX2 (8 lanes) both fuse multiply-adds and run every
+// lane through the same operations, so a world's bits must not depend on
+// which of the two a machine dispatches: a trajectory recorded on one
+// replays on the other. (SSE4 and the scalar target have no FMA: their bits
+// differ, docs/testing.md.)
+TEST_P(DeterminismTest, Avx2AndAvx3GiveIdenticalBits) {
+  const Scene scene = MakeReferenceScene(GetParam());
+  const SceneActions actions(GetParam());
+  std::vector<std::vector<float>> results;
+  for (const std::int64_t target : {std::int64_t{HWY_AVX3}, std::int64_t{HWY_AVX2}}) {
+    BatchOptions options;
+    options.target = target;
+    try {
+      Batch batch(scene, 37, options);
+      batch.SetState(DistinctStates(batch));
+      StepWithActions(batch, actions, 200, [](std::size_t w) { return w; });
+      results.push_back(StateOf(batch));
+    } catch (const SceneError&) {
+      GTEST_SKIP() << hwy::TargetName(target) << " is not supported here";
+    }
+  }
+  EXPECT_EQ(0, std::memcmp(results[0].data(), results[1].data(),
+                           results[0].size() * sizeof(float)));
 }
 
 INSTANTIATE_TEST_SUITE_P(ReferenceScenes, DeterminismTest,

@@ -9,13 +9,23 @@
 // Every world runs exactly the scalar Gauss-Seidel sweep of Jolt's solver
 // (spec 4.1) for its own data; worlds never interact, and a world's result
 // does not depend on its lane, its block, the thread count or its neighbours.
+//
+// Threads: a Batch spreads its own Step over threads, but is not itself
+// thread-safe: call one Batch from one thread at a time (different Batches
+// from different threads are fine). A call that writes or steps many worlds
+// while another thread is inside such a call on the same Batch throws
+// std::logic_error instead of corrupting worlds; a per-world setter or a
+// read during another thread's Step throws too. A moved-from Batch throws
+// std::logic_error from every call but destruction and assignment.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <span>
+#include <stop_token>
 #include <string>
+#include <vector>
 
 #include "manyworlds/scene.h"
 
@@ -35,8 +45,13 @@ enum WorldHealthBits : std::uint8_t {
   // 1 m, so no joint anchor can be represented any more.
   kPositionOutOfRange = 4,
   // A force, torque or motor target written into the world since the
-  // previous Step was NaN or infinite (actions are never refused).
+  // previous Step was NaN or infinite and not overwritten by a finite one
+  // before the Step (actions are never refused).
   kNonFiniteInput = 8,
+  // Step's stop token was triggered before the world's block started: the
+  // world did not step; nothing of it changed, and its forces and torques
+  // still wait for the next Step.
+  kNotStepped = 16,
 };
 inline constexpr float kMaxHealthyCoordinate = 16777216.0f;  // 2^24 m
 
@@ -45,6 +60,17 @@ enum class UnhealthyWorlds : std::uint8_t {
   kKeep,   // leave them as the step left them (they stay flagged until reset)
   kReset,  // put them back to the scene's initial state, as Reset does
 };
+
+// The accepted ranges of StepSettings (Step refuses others by name). A
+// substep below a microsecond would make 1/dt and the warm-start ratio
+// dt / dt_previous overflow float impulses; above a second no joint stays
+// together. The iteration and substep caps bound the time one Step can take.
+inline constexpr float kMinSubstepDeltaTime = 1e-6f;  // s
+inline constexpr float kMaxSubstepDeltaTime = 1.0f;   // s
+inline constexpr int kMaxSubsteps = 1024;
+inline constexpr int kMaxIterations = 1000;  // velocity and position each
+// BatchOptions::threads above this is refused (TBB cannot make such arenas).
+inline constexpr int kMaxThreads = 4096;
 
 // Jolt's PhysicsSettings that matter to constraint-only worlds (spec 4.2).
 struct StepSettings {
@@ -65,13 +91,34 @@ struct StepSettings {
 };
 
 struct BatchOptions {
-  int threads = 0;  // 0: every core TBB sees
+  int threads = 0;  // 0: every core TBB sees; at most kMaxThreads
   // Blocks of 16 worlds per TBB task; 0 picks enough tasks for the threads.
   std::size_t blocks_per_task = 0;
   // Highway target bit (e.g. HWY_AVX2, HWY_SCALAR) to run instead of the best
   // one this CPU supports; 0 dispatches. For SIMD-efficiency benchmarks and
-  // per-target tests; an unsupported target is refused.
+  // per-target tests; an unsupported target is refused. Affects this Batch
+  // only (Highway's global dispatch is never changed).
   std::int64_t target = 0;
+};
+
+// Every world of a Batch exactly as it is (Batch::Snapshot): bodies, per-world
+// parameters and targets, the solver's warm-start impulses and caches, health
+// and the previous step size. Restoring it makes every world continue bit for
+// bit as the original would. Its bytes can be stored and read back with
+// FromBytes; they fit only a Batch of the same scene, world count and build of
+// the library on the same kind of machine (Restore checks, by name).
+class BatchSnapshot {
+ public:
+  BatchSnapshot() = default;
+  bool empty() const { return data_.empty(); }
+  std::size_t world_count() const;
+  std::span<const std::byte> bytes() const { return data_; }
+  // Refuses (std::invalid_argument) bytes that are not a whole snapshot.
+  static BatchSnapshot FromBytes(std::span<const std::byte> bytes);
+
+ private:
+  friend class Batch;
+  std::vector<std::byte> data_;
 };
 
 // The 13 numbers of one body's state, in this order, in every state array.
@@ -99,15 +146,23 @@ class Batch {
   const Scene& scene() const;
 
   // Steps every world by settings.delta_time. Throws SceneError (naming the
-  // field) for a non-positive dt or substep count or negative iterations.
+  // field and the accepted range) for settings outside the ranges above.
   void Step(const StepSettings& settings);
+  // The same, interruptible: once `stop` is requested, blocks of 16 worlds
+  // not yet started are left exactly as they were and flagged kNotStepped;
+  // blocks already started finish their step. Returns whether every world
+  // stepped.
+  bool Step(const StepSettings& settings, std::stop_token stop);
 
   // ---- state, world-major: [world][body][13] (see StateField)
   void GetState(std::span<float> out) const;
   // Writes every world, or only those with mask[world] != 0. Rotations are
-  // normalised; velocities of static bodies stay zero. Non-finite values are
-  // written as given (the next Step flags the world, see WorldHealth); a zero
-  // rotation is refused before anything is written.
+  // normalised unless already unit to float rounding (then kept bit for bit,
+  // so SetState(GetState()) changes no bit); velocities of static bodies stay
+  // zero. Non-finite values are written as given (the next Step flags the
+  // world, see WorldHealth); a zero rotation is refused before anything is
+  // written. Solver state (warm-start impulses) is not part of a state array:
+  // Snapshot/Restore carry everything.
   void SetState(std::span<const float> in, std::span<const std::uint8_t> world_mask = {});
   // One field of every world and body: [world][body][StateFieldSize(field)].
   void GetField(StateField field, std::span<float> out) const;
@@ -119,6 +174,16 @@ class Batch {
   // Like Reset, then the given state ([world][body][13], every world's slot
   // present, only masked worlds read).
   void ResetTo(std::span<const std::uint8_t> world_mask, std::span<const float> state);
+
+  // ---- exact checkpoints (tree search, resets to saved states, replay)
+  BatchSnapshot Snapshot() const;
+  // Every world (empty mask), or only the worlds with mask[world] != 0, back
+  // to the snapshot, bit for bit. The step size the snapshot was taken after
+  // (for Jolt's warm-start ratio) is restored with every world only: a masked
+  // restore keeps the batch's own, which the next Step uses for all worlds.
+  // Throws std::invalid_argument, changing nothing, for a snapshot of
+  // another scene, world count or layout.
+  void Restore(const BatchSnapshot& snapshot, std::span<const std::uint8_t> world_mask = {});
 
   // ---- actions, per world. Forces and torques (world space, through the
   // centre of mass) act during the next Step and are then cleared, as Jolt's
@@ -193,6 +258,10 @@ class Batch {
   class Impl;
 
  private:
+  // impl_, or std::logic_error for a moved-from Batch or a call during
+  // another thread's Step.
+  Impl& impl();
+  const Impl& impl() const;
   std::unique_ptr<Impl> impl_;
 };
 

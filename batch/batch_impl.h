@@ -1,0 +1,178 @@
+// Batch::Impl: the blocks of worlds, the TBB loop over them and the lane
+// access the per-world API is built on. Private to batch/ (batch.cc: the
+// step, state and actions; batch_parameters.cc: per-world parameters;
+// batch_snapshot.cc: snapshots).
+#pragma once
+
+#include <tbb/task_arena.h>
+
+#include <atomic>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <stdexcept>
+#include <stop_token>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "batch/constraint_block.h"  // At
+#include "batch/constraint_lanes.h"
+#include "batch/plan.h"
+#include "batch/step_kernels.h"
+#include "manyworlds/batch.h"
+#include "manyworlds/error.h"
+#include "manyworlds/lanes.h"
+
+namespace manyworlds {
+
+class Batch::Impl {
+ public:
+  Impl(const Scene& scene, std::size_t world_count, BatchOptions options);
+
+  static constexpr std::size_t BlockCount(std::size_t worlds) {
+    return (worlds + kLaneWidth - 1) / kLaneWidth;
+  }
+  static std::byte* Bytes(LaneArray* arrays) { return reinterpret_cast<std::byte*>(arrays); }
+  static std::size_t Lane(std::size_t world) { return world % kLaneWidth; }
+
+  std::byte* Block(std::size_t block) {
+    return Bytes(storage_.data() + block * arrays_per_block_);
+  }
+  const std::byte* Block(std::size_t block) const {
+    return reinterpret_cast<const std::byte*>(storage_.data() + block * arrays_per_block_);
+  }
+
+  // Steps every block whose task starts before `stop` is requested.
+  void Step(const StepSettings& settings, std::stop_token stop);
+  void RecordHealth(std::size_t block, bool unhealthy, bool reset_unhealthy);
+
+  // ---- one caller at a time. A Batch is not thread-safe; calls that write
+  // many worlds (or step them) hold `busy_` and throw if another thread
+  // already does, rather than corrupting worlds; single-world calls only
+  // look at it (cheap enough for RL loops that call them per world).
+  class Exclusive {
+   public:
+    Exclusive(const Impl& impl, const char* call);
+    ~Exclusive();
+    Exclusive(const Exclusive&) = delete;
+    Exclusive& operator=(const Exclusive&) = delete;
+
+   private:
+    const Impl& impl_;
+    bool owns_;  // false when nested in this thread's own Exclusive call
+  };
+  void CheckNotBusy(const char* call) const;
+
+  // ---- actions: never refused (RL loops write them every step); a
+  // non-finite one is noted and reported with the world's health after the
+  // next Step. A finite one overwriting it clears the note once none of the
+  // world's inputs is non-finite any more.
+  template <class... Values>
+  void NoteInput(std::size_t world, Values... values) {
+    if (!(std::isfinite(values) && ...)) {
+      pending_input_[world] = kNonFiniteInput;
+    } else if (pending_input_[world] != 0) {
+      pending_input_[world] = InputsFinite(world) ? 0 : kNonFiniteInput;
+    }
+  }
+  bool InputsFinite(std::size_t world) const;
+
+  // ---- lane access
+  void CheckWorld(std::size_t world) const;
+  void CheckBody(std::size_t body) const;
+  const ConstraintPlan& Constraint(std::size_t index) const;
+  // "<body or constraint label> in world <w>", for per-world refusals.
+  std::string InWorld(const std::string& label, std::size_t world) const {
+    return label + " in world " + std::to_string(world);
+  }
+
+  template <class Lanes>
+  Lanes& In(std::size_t world, std::size_t offset) {
+    return At<Lanes>(Block(world / kLaneWidth), offset);
+  }
+  template <class Lanes>
+  const Lanes& In(std::size_t world, std::size_t offset) const {
+    return *reinterpret_cast<const Lanes*>(Block(world / kLaneWidth) + offset);
+  }
+
+  BodyLanes& Body(std::size_t world, std::size_t body) {
+    CheckWorld(world);
+    CheckBody(body);
+    return In<BodyLanes>(world, plan_.bodies[body].offset);
+  }
+  BodyMotionLanes& Motion(std::size_t world, std::size_t body, const char* setting);
+
+  // ---- state
+  void ReadState(std::size_t world, std::size_t body, float* out) const;
+  void CheckStates(std::span<const float> in, std::span<const std::uint8_t> mask) const;
+  void WriteState(std::size_t world, std::size_t body, const float* in);
+  void WriteStates(std::span<const float> in, std::span<const std::uint8_t> mask);
+  void CheckSize(std::size_t got, std::size_t want, const char* what) const;
+  static bool Selected(std::span<const std::uint8_t> mask, std::size_t world) {
+    return mask.empty() || mask[world] != 0;
+  }
+  void WriteLanes(std::size_t offset, std::span<const float> per_world);
+  void ResetWorld(std::size_t world);
+  void ResetWorlds(std::span<const std::uint8_t> mask);
+
+  // ---- per-constraint parameters
+  static void RefuseMultiAxis(const ConstraintPlan& c, const char* what);
+  RotationDriveLanes& RotationDrive(std::size_t world, std::size_t constraint, const char* what);
+  LinearMotorLanes* TranslationDrives(std::size_t world, std::size_t constraint,
+                                      const char* what);
+  template <class Fn>
+  void WithMotor(std::size_t world, std::size_t constraint, const char* what, Fn&& fn) {
+    CheckWorld(world);
+    const ConstraintPlan& c = Constraint(constraint);
+    RefuseMultiAxis(c, what);
+    if (c.motor_offset == kAbsent) {
+      throw SceneError(c.label + ": " + what +
+                       " needs a motor or friction in the scene (motor_state / max friction)");
+    }
+    if (c.type == ConstraintType::kHinge) {
+      fn(In<AngularMotorLanes>(world, c.motor_offset), c);
+    } else {
+      fn(In<LinearMotorLanes>(world, c.motor_offset), c);
+    }
+  }
+  template <class Fn>
+  void WithLimits(std::size_t world, std::size_t constraint, const char* what, Fn&& fn) {
+    CheckWorld(world);
+    const ConstraintPlan& c = Constraint(constraint);
+    RefuseMultiAxis(c, what);
+    if (c.limit_offset == kAbsent) {
+      throw SceneError(c.label + ": " + what + " needs limits in the scene");
+    }
+    if (c.type == ConstraintType::kHinge) {
+      fn(In<AngularLimitLanes>(world, c.limit_offset), c);
+    } else {
+      fn(In<LinearLimitLanes>(world, c.limit_offset), c);
+    }
+  }
+  float ClampedTarget(std::size_t world, const ConstraintPlan& c, float position) const;
+
+  Scene scene_;
+  StepPlan plan_;
+  std::size_t world_count_;
+  std::size_t block_count_;
+  std::size_t arrays_per_block_;
+  std::vector<LaneArray> initial_;  // one block with the scene in every lane
+  std::vector<LaneArray> storage_;  // block_count_ blocks
+  // Byte offsets in a block of the LaneArrays that hold actions (forces,
+  // torques, motor and drive targets), for InputsFinite.
+  std::vector<std::size_t> input_arrays_;
+  const StepKernels* kernels_;
+  int threads_;
+  tbb::task_arena arena_;
+  std::size_t blocks_per_task_;
+  float previous_substep_dt_ = 0.0f;  // Jolt's mPreviousStepDeltaTime (0: cold start)
+  std::vector<std::uint8_t> health_ = std::vector<std::uint8_t>(world_count_, 0);
+  std::vector<std::uint8_t> pending_input_ = std::vector<std::uint8_t>(world_count_, 0);
+  StepSettings last_settings_{};
+  mutable std::atomic<bool> busy_{false};
+  mutable std::atomic<std::thread::id> busy_thread_{};
+};
+
+}  // namespace manyworlds
