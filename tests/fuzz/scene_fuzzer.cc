@@ -11,7 +11,10 @@
 //   - WorldHealth() has one byte per world, holding only WorldHealthBits;
 //   - with UnhealthyWorlds::kKeep, a world whose state is not finite after a
 //     step is flagged kNonFiniteState (the health check misses nothing);
-//   - with UnhealthyWorlds::kReset, no world is left non-finite.
+//   - with UnhealthyWorlds::kReset, no world is left non-finite;
+//   - a refused call or step changes no byte of the batch (Snapshot bytes);
+//   - a step restored from a snapshot and taken again gives the same bytes;
+//   - a step stopped before it began steps no world and flags every one.
 // A broken property calls __builtin_trap(), which libFuzzer reports as a crash.
 //
 // The byte decoder favours values a Batch accepts (unit axes from a short
@@ -29,6 +32,7 @@
 #include <iterator>
 #include <limits>
 #include <optional>
+#include <stop_token>
 #include <stdexcept>
 #include <vector>
 
@@ -99,6 +103,16 @@ Quaternion Quat(FuzzedDataProvider& in) {
   return {0, 0, 0, 0};  // refused
 }
 
+// An enum value: one of its `count` enumerators, or one in ~30 times a value
+// past them (a cast from a bad integer), which the batch must refuse by name.
+template <class Enum>
+Enum EnumValue(FuzzedDataProvider& in, int count) {
+  if (in.ConsumeIntegral<std::uint8_t>() >= 248) {
+    return static_cast<Enum>(count + in.ConsumeIntegralInRange<int>(0, 250 - count));
+  }
+  return static_cast<Enum>(in.ConsumeIntegralInRange<int>(0, count - 1));
+}
+
 std::size_t Index(FuzzedDataProvider& in, std::size_t count) {
   // One in ~30 out of range, to check that the batch refuses it.
   if (in.ConsumeIntegral<std::uint8_t>() >= 248) return count + in.ConsumeIntegral<std::uint8_t>();
@@ -111,7 +125,7 @@ std::size_t Helper(FuzzedDataProvider& in, std::size_t constraints) {
 
 SpringSettings Spring(FuzzedDataProvider& in) {
   SpringSettings spring;
-  spring.mode = static_cast<SpringMode>(in.ConsumeIntegralInRange<int>(0, 2));
+  spring.mode = EnumValue<SpringMode>(in, 3);
   spring.frequency_or_stiffness = in.ConsumeBool() ? 0.0f : Float(in, -1, 100);
   spring.damping = Float(in, -0.5f, 5);
   return spring;
@@ -129,7 +143,7 @@ MotorSettings Motor(FuzzedDataProvider& in) {
 
 BodySettings Body(FuzzedDataProvider& in) {
   BodySettings body;
-  body.motion_type = static_cast<MotionType>(in.ConsumeIntegralInRange<int>(0, 2));
+  body.motion_type = EnumValue<MotionType>(in, 3);
   body.mass = Float(in, 0.01f, 100);
   body.inertia_diagonal = Vec(in, 0.001f, 10);
   body.inertia_rotation = Quat(in);
@@ -153,7 +167,7 @@ template <class Settings>
 void Common(FuzzedDataProvider& in, std::size_t bodies, Settings& c) {
   c.body1 = Index(in, bodies);
   c.body2 = Index(in, bodies);
-  c.space = in.ConsumeBool() ? ConstraintSpace::kWorldSpace : ConstraintSpace::kLocalToBodyCOM;
+  c.space = EnumValue<ConstraintSpace>(in, 2);
 }
 
 ConstraintSettings Constraint(FuzzedDataProvider& in, std::size_t bodies,
@@ -191,7 +205,7 @@ ConstraintSettings Constraint(FuzzedDataProvider& in, std::size_t bodies,
       }
       c.max_friction_torque = in.ConsumeBool() ? 0.0f : Float(in, -1, 10);
       c.motor = Motor(in);
-      c.motor_state = static_cast<MotorState>(in.ConsumeIntegralInRange<int>(0, 3));
+      c.motor_state = EnumValue<MotorState>(in, 4);
       c.target_angular_velocity = Float(in, -10, 10);
       c.target_angle = Float(in, -4, 4);
       return c;
@@ -212,7 +226,7 @@ ConstraintSettings Constraint(FuzzedDataProvider& in, std::size_t bodies,
       }
       c.max_friction_force = in.ConsumeBool() ? 0.0f : Float(in, -1, 10);
       c.motor = Motor(in);
-      c.motor_state = static_cast<MotorState>(in.ConsumeIntegralInRange<int>(0, 3));
+      c.motor_state = EnumValue<MotorState>(in, 4);
       c.target_velocity = Float(in, -10, 10);
       c.target_position = Float(in, -10, 10);
       return c;
@@ -277,7 +291,7 @@ ConstraintSettings Constraint(FuzzedDataProvider& in, std::size_t bodies,
       const Frame f1 = AxisPair(in), f2 = in.ConsumeBool() ? f1 : AxisPair(in);
       c.twist_axis1 = f1.axis, c.plane_axis1 = f1.normal;
       c.twist_axis2 = f2.axis, c.plane_axis2 = f2.normal;
-      c.swing_type = in.ConsumeBool() ? SwingType::kCone : SwingType::kPyramid;
+      c.swing_type = EnumValue<SwingType>(in, 2);
       // Locked (within 0.5 deg), limited and free (beyond 179.5 deg) axes.
       c.normal_half_cone_angle = Float(in, 0, 3.3f);
       c.plane_half_cone_angle = Float(in, 0, 3.3f);
@@ -287,8 +301,8 @@ ConstraintSettings Constraint(FuzzedDataProvider& in, std::size_t bodies,
         c.max_friction_torque = Float(in, -1, 10);
         c.twist_motor = Motor(in);
         c.swing_motor = Motor(in);
-        c.twist_motor_state = static_cast<MotorState>(in.ConsumeIntegralInRange<int>(0, 3));
-        c.swing_motor_state = static_cast<MotorState>(in.ConsumeIntegralInRange<int>(0, 3));
+        c.twist_motor_state = EnumValue<MotorState>(in, 4);
+        c.swing_motor_state = EnumValue<MotorState>(in, 4);
         c.target_angular_velocity = Vec(in, -10, 10);
         c.target_orientation = Quat(in);
       }
@@ -298,7 +312,7 @@ ConstraintSettings Constraint(FuzzedDataProvider& in, std::size_t bodies,
       PathConstraintSettings c;
       c.body1 = Index(in, bodies);
       c.body2 = Index(in, bodies);
-      c.space = in.ConsumeBool() ? ConstraintSpace::kWorldSpace : ConstraintSpace::kLocalToBodyCOM;
+      c.space = EnumValue<ConstraintSpace>(in, 2);
       c.path_position = Vec(in, -5, 5);
       c.path_rotation = Quat(in);
       // 0 to 5 points (fewer than 2 is refused), tangents and normals that
@@ -320,7 +334,7 @@ ConstraintSettings Constraint(FuzzedDataProvider& in, std::size_t bodies,
       c.rotation = static_cast<PathRotation>(in.ConsumeIntegralInRange<int>(0, 5));
       c.max_friction_force = Float(in, -1, 10);
       c.motor = Motor(in);
-      c.motor_state = static_cast<MotorState>(in.ConsumeIntegralInRange<int>(0, 3));
+      c.motor_state = EnumValue<MotorState>(in, 4);
       c.target_velocity = Float(in, -5, 5);
       c.target_path_fraction = Float(in, -2, 6);
       return c;
@@ -333,7 +347,7 @@ ConstraintSettings Constraint(FuzzedDataProvider& in, std::size_t bodies,
       const Frame f1 = AxisPair(in), f2 = in.ConsumeBool() ? f1 : AxisPair(in);
       c.axis_x1 = f1.axis, c.axis_y1 = f1.normal;
       c.axis_x2 = f2.axis, c.axis_y2 = f2.normal;
-      c.swing_type = in.ConsumeBool() ? SwingType::kCone : SwingType::kPyramid;
+      c.swing_type = EnumValue<SwingType>(in, 2);
       for (std::size_t axis = 0; axis < kSixDofAxes; ++axis) {
         // Fixed, free, limited, inverted and out-of-range limits.
         switch (in.ConsumeIntegralInRange<int>(0, 3)) {
@@ -343,7 +357,7 @@ ConstraintSettings Constraint(FuzzedDataProvider& in, std::size_t bodies,
         }
         if (in.ConsumeBool()) {
           c.motor[axis] = Motor(in);
-          c.motor_state[axis] = static_cast<MotorState>(in.ConsumeIntegralInRange<int>(0, 3));
+          c.motor_state[axis] = EnumValue<MotorState>(in, 4);
           c.max_friction[axis] = Float(in, -1, 10);
         }
         if (axis < 3 && in.ConsumeBool()) c.limits_spring[axis] = Spring(in);
@@ -360,15 +374,23 @@ ConstraintSettings Constraint(FuzzedDataProvider& in, std::size_t bodies,
 StepSettings Settings(FuzzedDataProvider& in) {
   StepSettings s;
   // Mostly valid (the checks are tested once, in batch_test); sometimes not.
+  // Float's special values include FLT_TRUE_MIN and 1e-30: a step so short
+  // that 1/dt and the next warm-start ratio overflow, which must be refused.
   s.delta_time = in.ConsumeIntegral<std::uint8_t>() < 240 ? Float(in, 1e-4f, 0.1f)
                                                          : Float(in, -1, 1);
   s.substeps = in.ConsumeIntegralInRange<int>(in.ConsumeBool() ? 1 : -1, 3);
   s.velocity_iterations = in.ConsumeIntegralInRange<int>(in.ConsumeBool() ? 0 : -1, 12);
   s.position_iterations = in.ConsumeIntegralInRange<int>(0, 4);
+  if (in.ConsumeIntegral<std::uint8_t>() >= 252) {  // past the caps: refused
+    s.substeps = kMaxSubsteps + in.ConsumeIntegralInRange<int>(1, 1 << 20);
+  }
+  if (in.ConsumeIntegral<std::uint8_t>() >= 252) {
+    s.velocity_iterations = kMaxIterations + in.ConsumeIntegralInRange<int>(1, 1 << 20);
+  }
   s.baumgarte = Float(in, 0, 1);
   s.warm_start = in.ConsumeBool();
   if (in.ConsumeBool()) s.gravity = Vec(in, -20, 20);
-  s.unhealthy_worlds = in.ConsumeBool() ? UnhealthyWorlds::kKeep : UnhealthyWorlds::kReset;
+  s.unhealthy_worlds = EnumValue<UnhealthyWorlds>(in, 2);
   s.gyroscopic = in.ConsumeBool();
   return s;
 }
@@ -468,7 +490,7 @@ void CheckHealth(const Batch& batch, const StepSettings& settings) {
   batch.GetState(state);
   std::size_t unhealthy = 0;
   for (std::size_t w = 0; w < batch.world_count(); ++w) {
-    Check((health[w] & ~0xF) == 0);
+    Check((health[w] & ~0xF) == 0);  // kNotStepped only with a stop token
     unhealthy += health[w] != 0;
     bool finite = true;
     for (std::size_t i = 0; i < floats; ++i) finite &= std::isfinite(state[w * floats + i]);
@@ -480,6 +502,44 @@ void CheckHealth(const Batch& batch, const StepSettings& settings) {
     (void)batch.MaxConstraintError(w);
   }
   Check(unhealthy == batch.UnhealthyWorldCount());
+}
+
+bool SameBytes(const BatchSnapshot& a, const BatchSnapshot& b) {
+  return a.bytes().size() == b.bytes().size() &&
+         std::memcmp(a.bytes().data(), b.bytes().data(), a.bytes().size()) == 0;
+}
+
+void CheckUnchanged(const Batch& batch, const BatchSnapshot& before) {
+  Check(SameBytes(batch.Snapshot(), before));
+}
+
+// Back to the snapshot taken before the step just taken, and the same step
+// again: every byte (state, impulses, health) must come out the same.
+void CheckRestoredStepIsExact(Batch& batch, const StepSettings& settings,
+                              const BatchSnapshot& before) {
+  const BatchSnapshot after = batch.Snapshot();
+  batch.Restore(before);
+  batch.Step(settings);
+  Check(SameBytes(batch.Snapshot(), after));
+}
+
+// A step whose stop was requested before it began steps nothing: every world
+// flagged kNotStepped, every state bit as before. (Throws SceneError, like
+// Step, for refused settings.)
+void CheckStoppedStep(Batch& batch, const StepSettings& settings,
+                      const BatchSnapshot& before) {
+  std::vector<float> state_before(batch.world_count() * batch.body_count() *
+                                  kStateFloatsPerBody);
+  batch.GetState(state_before);
+  std::stop_source stop;
+  stop.request_stop();
+  Check(!batch.Step(settings, stop.get_token()));
+  std::vector<float> state_after(state_before.size());
+  batch.GetState(state_after);
+  Check(std::memcmp(state_before.data(), state_after.data(),
+                    state_before.size() * sizeof(float)) == 0);
+  for (const std::uint8_t bits : batch.WorldHealth()) Check(bits == kNotStepped);
+  batch.Restore(before);  // the health of the last real step back
 }
 
 // The mass-range limit with a random ratio: a bad ratio is refused with
@@ -546,19 +606,29 @@ void Run(FuzzedDataProvider& in) {
   for (int step = 0; step < steps; ++step) {
     const int calls = in.ConsumeIntegralInRange<int>(0, kMaxCallsPerStep);
     for (int i = 0; i < calls; ++i) {
+      const BatchSnapshot before = batch->Snapshot();
       try {
         RandomCall(in, *batch);
       } catch (const std::invalid_argument&) {
+        CheckUnchanged(*batch, before);  // a refused call writes nothing
       } catch (const std::out_of_range&) {
+        CheckUnchanged(*batch, before);
       }
     }
     const StepSettings settings = Settings(in);
+    const BatchSnapshot before = batch->Snapshot();
     try {
+      if (in.ConsumeIntegral<std::uint8_t>() >= 240) {
+        CheckStoppedStep(*batch, settings, before);
+        continue;
+      }
       batch->Step(settings);
     } catch (const SceneError&) {
-      continue;  // refused settings: nothing stepped
+      CheckUnchanged(*batch, before);  // refused settings: nothing stepped
+      continue;
     }
     CheckHealth(*batch, settings);
+    if (in.ConsumeBool()) CheckRestoredStepIsExact(*batch, settings, before);
   }
   if (in.ConsumeBool()) (void)batch->Plan();
 }
