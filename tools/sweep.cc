@@ -7,7 +7,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <cstdlib>
 #include <ctime>  // also POSIX clock_gettime
 #include <filesystem>
 #include <fstream>
@@ -23,6 +22,7 @@
 #include "manyworlds/scenes.h"
 #include "reference/world.h"
 #include "tools/options.h"
+#include "tools/subprocess.h"
 #include "tools/sweep_metrics.h"
 #include "tools/sweep_report.h"
 
@@ -288,8 +288,6 @@ void MeasureAccuracy(const Scene& scene, const SceneActions& actions, const Swee
                                 [](std::uint8_t bits) { return bits != 0; }));
 }
 
-bool GnuplotInstalled() { return std::system("command -v gnuplot > /dev/null 2>&1") == 0; }
-
 }  // namespace
 
 int Sweep(int argc, char** argv) {
@@ -358,17 +356,15 @@ int Sweep(int argc, char** argv) {
   }
   std::printf("wrote %s/sweep.csv, sweep.md, sweep.gp (%zu settings, %.1f s)\n",
               config.out.c_str(), rows.size(), wall);
-  if (!GnuplotInstalled()) {
+  const std::filesystem::path gnuplot = FindOnPath("gnuplot");
+  if (gnuplot.empty()) {
     std::printf("gnuplot not found: no plots (apt-get install gnuplot-nox, then run "
                 "'gnuplot sweep.gp' in %s)\n",
                 config.out.c_str());
     return 0;
   }
-  const std::string plot = "cd '" + config.out.string() + "' && gnuplot sweep.gp";
-  if (std::system(plot.c_str()) != 0) {
-    std::fprintf(stderr, "manyworlds: gnuplot failed on %s/sweep.gp\n", config.out.c_str());
-    return 1;
-  }
+  // In the folder: sweep.gp names its PNGs relative to it.
+  RunInFolder(gnuplot, {"sweep.gp"}, config.out);
   std::printf("plotted %zu scene(s): %s/<scene>.png ('/' in an id as '_')\n",
               config.scenes.size(),
               config.out.c_str());

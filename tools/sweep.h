@@ -35,8 +35,10 @@
 //
 // Writes DIR/sweep.csv (every setting), DIR/sweep.md (the tables) and
 // DIR/sweep.gp, a gnuplot script drawing DIR/<scene>.png: each metric against
-// ns per world-step, one curve per knob. gnuplot runs when it is installed;
-// without it the CSV and Markdown are still written (exit code 0).
+// ns per world-step, one curve per knob. gnuplot runs when it is on PATH, as
+// `gnuplot sweep.gp` in DIR and without a shell (tools/subprocess.h), so any
+// folder name works; without it the CSV and Markdown are still written (exit
+// code 0).
 #pragma once
 
 #include <string>

@@ -1,0 +1,86 @@
+#!/usr/bin/env bash
+# ctest sweep_output_<case>: what `manyworlds sweep` does with its output
+# folder (issue 21). Usage: sweep_output_test.sh MANYWORLDS CASE, CASE one of
+#   no-shell     folder names with ' ; $ spaces backquotes and a newline: the
+#                reports and plots land in them and nothing they contain runs
+#                (neither in a shell nor in gnuplot); gnuplot is found on PATH
+#                and run in the folder as `gnuplot sweep.gp`, and its failure
+#                is reported
+# Every case runs in its own temporary folder, removed at the end.
+set -euo pipefail
+manyworlds=$1
+case=$2
+
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+cd "$tmp"
+
+fail() { echo "sweep_output_test $case: $*" >&2; exit 1; }
+
+# A sweep of one scene at the smallest settings: well under a second.
+sweep() {
+  "$manyworlds" sweep --small --scenes rackpinion --worlds 8 --sample-worlds 2 --seconds 0.05 \
+    --min-time 0 "$@"
+}
+
+# Runs the sweep with the arguments given; sets $status and leaves its output
+# in ./stdout and ./stderr.
+run() {
+  status=0
+  sweep "$@" > stdout 2> stderr || status=$?
+}
+
+expect_reports_in() {
+  local file
+  for file in sweep.csv sweep.md sweep.gp; do
+    [ -s "$1/$file" ] || fail "'$1/$file' missing or empty"
+  done
+}
+
+case $case in
+  no-shell)
+    names=("x'; touch INJECTED; echo '"
+           "it's a \$HOME; \$(touch INJECTED) \`touch INJECTED\` & dir"
+           $'new\nsystem "touch INJECTED"\nline')
+    for name in "${names[@]}"; do
+      run --out "$name"
+      # Every INJECTED file anywhere, also inside the folders: gnuplot runs there.
+      injected=$(find "$tmp" -name 'INJECTED*')
+      [ -z "$injected" ] || fail "--out '$name' ran a command: $injected exists"
+      [ "$status" -eq 0 ] || fail "--out '$name': exit code $status: $(cat stderr)"
+      expect_reports_in "$tmp/$name"
+      if command -v gnuplot > /dev/null; then
+        [ -s "$tmp/$name/rackpinion.png" ] || fail "no plot in '$name': $(cat stdout)"
+      fi
+    done
+
+    # gnuplot is looked up on PATH and run in the folder with the argument
+    # sweep.gp; its exit code is reported. A stand-in records how it ran.
+    mkdir bin
+    cat > bin/gnuplot <<'EOF'
+#!/bin/sh
+printf '%s\n' "$PWD" "$#" "$1" > "$CALL_LOG"
+exit 3
+EOF
+    chmod +x bin/gnuplot
+    name=${names[1]}
+    rm -rf "${tmp:?}/$name"
+    status=0
+    CALL_LOG=$tmp/call PATH=$tmp/bin sweep --out "$name" > stdout 2> stderr || status=$?
+    [ "$status" -eq 1 ] || fail "a gnuplot exiting with 3: exit code $status, expected 1"
+    grep -q 'exited with code 3' stderr || fail "gnuplot's exit code not reported: $(cat stderr)"
+    [ "$(cat call)" = "$(printf '%s\n' "$tmp/$name" 1 sweep.gp)" ] ||
+      fail "gnuplot ran as: $(cat call)"
+
+    # Without gnuplot on PATH: the reports, a note, exit code 0.
+    rm -rf "${tmp:?}/$name"
+    status=0
+    PATH=$tmp/nothing-here sweep --out "$name" > stdout 2> stderr || status=$?
+    [ "$status" -eq 0 ] || fail "without gnuplot: exit code $status: $(cat stderr)"
+    grep -q 'gnuplot not found' stdout || fail "without gnuplot, no note: $(cat stdout)"
+    expect_reports_in "$tmp/$name"
+    ;;
+
+  *) fail "unknown case" ;;
+esac
+echo "sweep_output_test $case: passed"
