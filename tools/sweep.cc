@@ -2,18 +2,25 @@
 
 #include "tools/sweep.h"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <ctime>  // also POSIX clock_gettime
 #include <filesystem>
 #include <fstream>
 #include <limits>
 #include <span>
 #include <sstream>
+#include <stdexcept>
 #include <string>
+#include <system_error>
 #include <vector>
 
 #include "manyworlds/batch.h"
@@ -288,10 +295,35 @@ void MeasureAccuracy(const Scene& scene, const SceneActions& actions, const Swee
                                 [](std::uint8_t bits) { return bits != 0; }));
 }
 
+// ---- the output folder
+
+// Creates the output folder and proves that it takes a new file, before the
+// stepping (minutes with the defaults) rather than after it. Throws naming
+// the folder.
+void PrepareOutputFolder(const std::filesystem::path& folder) {
+  std::error_code error;
+  std::filesystem::create_directories(folder, error);
+  if (error) {
+    throw std::runtime_error("cannot create the output folder '" + folder.string() +
+                             "': " + error.message());
+  }
+  // A file of our own, created and removed: whatever would refuse the
+  // reports (permissions, a read-only mount, no inode left) refuses it now.
+  const std::filesystem::path probe = folder / (".sweep-probe-" + std::to_string(::getpid()));
+  const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+  if (fd < 0) {
+    throw std::runtime_error("cannot write to the output folder '" + folder.string() +
+                             "': " + std::strerror(errno));
+  }
+  ::close(fd);
+  std::filesystem::remove(probe, error);
+}
+
 }  // namespace
 
 int Sweep(int argc, char** argv) {
   const SweepConfig config = ConfigOf(argc, argv);
+  PrepareOutputFolder(config.out);
   const auto started = Clock::now();
   const std::vector<Knobs> settings = SettingsOf(ValuesOf(config.small), config.full_grid);
 
@@ -341,7 +373,6 @@ int Sweep(int argc, char** argv) {
   }
   const double wall = std::chrono::duration<double>(Clock::now() - started).count();
 
-  std::filesystem::create_directories(config.out);
   {
     std::ofstream csv(config.out / "sweep.csv");
     WriteCsv(csv, rows, config, machine);

@@ -6,13 +6,15 @@
 #                (neither in a shell nor in gnuplot); gnuplot is found on PATH
 #                and run in the folder as `gnuplot sweep.gp`, and its failure
 #                is reported
+#   unwritable   a folder that cannot be created or written to is refused
+#                with one line naming it before any simulation
 # Every case runs in its own temporary folder, removed at the end.
 set -euo pipefail
 manyworlds=$1
 case=$2
 
 tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+trap 'chmod -R u+w "$tmp"; rm -rf "$tmp"' EXIT  # u+w: the read-only folder
 cd "$tmp"
 
 fail() { echo "sweep_output_test $case: $*" >&2; exit 1; }
@@ -28,6 +30,15 @@ sweep() {
 run() {
   status=0
   sweep "$@" > stdout 2> stderr || status=$?
+}
+
+# The sweep failed with exit code 1 and one line on stderr that contains
+# $1, and stepped nothing (its per-setting lines start with the scene id).
+expect_refused_early() {
+  [ "$status" -eq 1 ] || fail "exit code $status, expected 1; stderr: $(cat stderr)"
+  [ "$(wc -l < stderr)" -eq 1 ] || fail "stderr is not one line: $(cat stderr)"
+  grep -qF -- "$1" stderr || fail "stderr does not name '$1': $(cat stderr)"
+  ! grep -q '^rackpinion' stdout || fail "it simulated before refusing: $(cat stdout)"
 }
 
 expect_reports_in() {
@@ -79,6 +90,28 @@ EOF
     [ "$status" -eq 0 ] || fail "without gnuplot: exit code $status: $(cat stderr)"
     grep -q 'gnuplot not found' stdout || fail "without gnuplot, no note: $(cat stdout)"
     expect_reports_in "$tmp/$name"
+    ;;
+
+  unwritable)
+    # A folder that cannot be created: its parent is a file.
+    touch file
+    run --out file/sweep
+    expect_refused_early "file/sweep"
+    # A folder that exists but takes no file: a read-only one, or for root,
+    # who writes through permission bits, /sys, where nobody creates files.
+    if [ "$(id -u)" -ne 0 ]; then
+      mkdir read-only
+      chmod a-w read-only
+      folder=$tmp/read-only
+    elif [ -d /sys ] && ! touch /sys/manyworlds-probe 2> /dev/null; then
+      folder=/sys
+    else
+      rm -f /sys/manyworlds-probe
+      echo "sweep_output_test: no unwritable existing folder here, that half skipped"
+      exit 0
+    fi
+    run --out "$folder"
+    expect_refused_early "$folder"
     ;;
 
   *) fail "unknown case" ;;
