@@ -319,6 +319,24 @@ void PrepareOutputFolder(const std::filesystem::path& folder) {
   std::filesystem::remove(probe, error);
 }
 
+// Writes one report file with `write` and checks that every byte reached
+// it: a full disk or a file-size limit shows only when the stream is flushed
+// and closed. Throws naming the file, which it removes: a truncated CSV
+// must not pass for a report.
+template <typename Write>
+void WriteReport(const std::filesystem::path& path, Write write) {
+  errno = 0;
+  std::ofstream file(path);
+  write(file);
+  file.close();
+  if (file) return;
+  const int code = errno;
+  std::error_code ignored;
+  std::filesystem::remove(path, ignored);
+  throw std::runtime_error("could not write '" + path.string() + "'" +
+                           (code != 0 ? std::string(": ") + std::strerror(code) : ""));
+}
+
 }  // namespace
 
 int Sweep(int argc, char** argv) {
@@ -373,18 +391,12 @@ int Sweep(int argc, char** argv) {
   }
   const double wall = std::chrono::duration<double>(Clock::now() - started).count();
 
-  {
-    std::ofstream csv(config.out / "sweep.csv");
-    WriteCsv(csv, rows, config, machine);
-  }
-  {
-    std::ofstream md(config.out / "sweep.md");
-    WriteMarkdown(md, rows, config, machine, wall);
-  }
-  {
-    std::ofstream gp(config.out / "sweep.gp");
-    WriteGnuplot(gp, rows, config, machine);
-  }
+  WriteReport(config.out / "sweep.csv",
+              [&](std::ostream& csv) { WriteCsv(csv, rows, config, machine); });
+  WriteReport(config.out / "sweep.md",
+              [&](std::ostream& md) { WriteMarkdown(md, rows, config, machine, wall); });
+  WriteReport(config.out / "sweep.gp",
+              [&](std::ostream& gp) { WriteGnuplot(gp, rows, config, machine); });
   std::printf("wrote %s/sweep.csv, sweep.md, sweep.gp (%zu settings, %.1f s)\n",
               config.out.c_str(), rows.size(), wall);
   const std::filesystem::path gnuplot = FindOnPath("gnuplot");

@@ -39,10 +39,12 @@
 //
 // Writes DIR/sweep.csv (every setting), DIR/sweep.md (the tables) and
 // DIR/sweep.gp, a gnuplot script drawing DIR/<scene>.png: each metric against
-// ns per world-step, one curve per knob. gnuplot runs when it is on PATH, as
-// `gnuplot sweep.gp` in DIR and without a shell (tools/subprocess.h), so any
-// folder name works; without it the CSV and Markdown are still written (exit
-// code 0).
+// ns per world-step, one curve per knob. A file not written in full (a full
+// disk shows at flush and close) is an error naming it (exit code 1) and is
+// removed; "wrote" is printed only once all three are. gnuplot runs when it
+// is on PATH, as `gnuplot sweep.gp` in DIR and without a shell
+// (tools/subprocess.h), so any folder name works; without it the CSV and
+// Markdown are still written (exit code 0).
 #pragma once
 
 #include <string>

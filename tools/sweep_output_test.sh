@@ -8,6 +8,8 @@
 #                is reported
 #   unwritable   a folder that cannot be created or written to is refused
 #                with one line naming it before any simulation
+#   write-error  a report the disk does not take is an error naming it,
+#                never "wrote"
 # Every case runs in its own temporary folder, removed at the end.
 set -euo pipefail
 manyworlds=$1
@@ -112,6 +114,19 @@ EOF
     fi
     run --out "$folder"
     expect_refused_early "$folder"
+    ;;
+
+  write-error)
+    # The folder takes an empty file (the probe) but no byte of a report:
+    # a file-size limit of 0; writes fail with EFBIG instead of a signal.
+    # The limit holds for every file the sweep writes to, so its output goes
+    # through a pipe.
+    status=0
+    output=$( (ulimit -f 0; trap '' XFSZ; sweep --out out) 2>&1 ) || status=$?
+    ! grep -q 'wrote' <<< "$output" || fail "it claims to have written: $output"
+    [ "$status" -eq 1 ] || fail "exit code $status, expected 1: $output"
+    grep -qF 'out/sweep.csv' <<< "$output" || fail "no error naming out/sweep.csv: $output"
+    [ ! -e out/sweep.csv ] || fail "a partial out/sweep.csv was left behind"
     ;;
 
   *) fail "unknown case" ;;
