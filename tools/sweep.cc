@@ -124,9 +124,10 @@ SweepConfig ConfigOf(int argc, char** argv) {
                         {"--scenes", "--worlds", "--sample-worlds", "--seconds", "--passes",
                          "--min-time", "--threads", "--grid", "--out", "--seed",
                          "--mass-range-limit"},
-                        {"--small"});
+                        {"--small", "--overwrite"});
   SweepConfig config;
   config.small = options.Has("--small");
+  config.overwrite = options.Has("--overwrite");
   // --small: the smoke test's size, a few seconds in all.
   config.scenes = SplitIds(options.Text(
       "--scenes", config.small ? "rackpinion,chain16" : ""));
@@ -297,15 +298,34 @@ void MeasureAccuracy(const Scene& scene, const SceneActions& actions, const Swee
 
 // ---- the output folder
 
-// Creates the output folder and proves that it takes a new file, before the
+// The files the sweep writes in its output folder; gnuplot adds the plots.
+constexpr const char* kCsvFile = "sweep.csv";
+constexpr const char* kMarkdownFile = "sweep.md";
+constexpr const char* kGnuplotFile = "sweep.gp";
+
+// Creates the output folder, refuses to replace an earlier report without
+// --overwrite, and proves that the folder takes a new file: before the
 // stepping (minutes with the defaults) rather than after it. Throws naming
-// the folder.
-void PrepareOutputFolder(const std::filesystem::path& folder) {
+// the folder or the file.
+void PrepareOutputFolder(const SweepConfig& config) {
+  const std::filesystem::path& folder = config.out;
   std::error_code error;
   std::filesystem::create_directories(folder, error);
   if (error) {
     throw std::runtime_error("cannot create the output folder '" + folder.string() +
                              "': " + error.message());
+  }
+  if (!config.overwrite) {
+    std::vector<std::string> files = {kCsvFile, kMarkdownFile, kGnuplotFile};
+    for (const std::string& scene : config.scenes) files.push_back(PlotFileName(scene));
+    for (const std::string& file : files) {
+      const std::filesystem::path path = folder / file;
+      // symlink_status: a link to nowhere would be replaced too.
+      if (std::filesystem::exists(std::filesystem::symlink_status(path, error))) {
+        throw std::runtime_error("'" + path.string() +
+                                 "' exists: pass --overwrite to replace the earlier report");
+      }
+    }
   }
   // A file of our own, created and removed: whatever would refuse the
   // reports (permissions, a read-only mount, no inode left) refuses it now.
@@ -341,7 +361,7 @@ void WriteReport(const std::filesystem::path& path, Write write) {
 
 int Sweep(int argc, char** argv) {
   const SweepConfig config = ConfigOf(argc, argv);
-  PrepareOutputFolder(config.out);
+  PrepareOutputFolder(config);
   const auto started = Clock::now();
   const std::vector<Knobs> settings = SettingsOf(ValuesOf(config.small), config.full_grid);
 
@@ -391,11 +411,11 @@ int Sweep(int argc, char** argv) {
   }
   const double wall = std::chrono::duration<double>(Clock::now() - started).count();
 
-  WriteReport(config.out / "sweep.csv",
+  WriteReport(config.out / kCsvFile,
               [&](std::ostream& csv) { WriteCsv(csv, rows, config, machine); });
-  WriteReport(config.out / "sweep.md",
+  WriteReport(config.out / kMarkdownFile,
               [&](std::ostream& md) { WriteMarkdown(md, rows, config, machine, wall); });
-  WriteReport(config.out / "sweep.gp",
+  WriteReport(config.out / kGnuplotFile,
               [&](std::ostream& gp) { WriteGnuplot(gp, rows, config, machine); });
   std::printf("wrote %s/sweep.csv, sweep.md, sweep.gp (%zu settings, %.1f s)\n",
               config.out.c_str(), rows.size(), wall);
@@ -407,7 +427,7 @@ int Sweep(int argc, char** argv) {
     return 0;
   }
   // In the folder: sweep.gp names its PNGs relative to it.
-  RunInFolder(gnuplot, {"sweep.gp"}, config.out);
+  RunInFolder(gnuplot, {kGnuplotFile}, config.out);
   std::printf("plotted %zu scene(s): %s/<scene>.png ('/' in an id as '_')\n",
               config.scenes.size(),
               config.out.c_str());

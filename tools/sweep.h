@@ -33,9 +33,11 @@
 // (the remedy of docs/stability.md); batch and reference then step the same
 // limited scene.
 //
-// Before it steps anything it creates DIR (--out) and creates and removes a
-// file there: a folder it cannot write to is an error naming it (exit code
-// 1) then, not after the sweep.
+// Before it steps anything it creates DIR (--out), refuses to replace an
+// earlier report there (sweep.csv, sweep.md, sweep.gp, a scene's PNG) unless
+// --overwrite, and creates and removes a file there: an earlier report or a
+// folder it cannot write to is an error naming it (exit code 1) then, not
+// after the sweep.
 //
 // Writes DIR/sweep.csv (every setting), DIR/sweep.md (the tables) and
 // DIR/sweep.gp, a gnuplot script drawing DIR/<scene>.png: each metric against

@@ -10,6 +10,8 @@
 #                with one line naming it before any simulation
 #   write-error  a report the disk does not take is an error naming it,
 #                never "wrote"
+#   existing     an earlier report is refused before any simulation unless
+#                --overwrite
 # Every case runs in its own temporary folder, removed at the end.
 set -euo pipefail
 manyworlds=$1
@@ -127,6 +129,34 @@ EOF
     [ "$status" -eq 1 ] || fail "exit code $status, expected 1: $output"
     grep -qF 'out/sweep.csv' <<< "$output" || fail "no error naming out/sweep.csv: $output"
     [ ! -e out/sweep.csv ] || fail "a partial out/sweep.csv was left behind"
+    # A full disk: sweep.md a link to /dev/full, which takes no byte (ENOSPC).
+    mkdir full
+    ln -s /dev/full full/sweep.md
+    run --out full --overwrite
+    ! grep -q 'wrote' stdout || fail "it claims to have written: $(grep wrote stdout)"
+    [ "$status" -eq 1 ] || fail "/dev/full: exit code $status, expected 1: $(cat stderr)"
+    grep -qF 'full/sweep.md' stderr || fail "no error naming full/sweep.md: $(cat stderr)"
+    ;;
+
+  existing)
+    # The reports and the plot, one at a time.
+    files=(sweep.csv sweep.md sweep.gp rackpinion.png)
+    for file in "${files[@]}"; do
+      rm -rf out
+      mkdir out
+      echo keep > "out/$file"
+      run --out out
+      expect_refused_early "out/$file"
+      grep -qF -- '--overwrite' stderr || fail "the error does not mention --overwrite"
+      [ "$(cat "out/$file")" = keep ] || fail "out/$file was changed"
+    done
+    for file in "${files[@]}"; do echo keep > "out/$file"; done
+    run --out out --overwrite
+    [ "$status" -eq 0 ] || fail "--overwrite: exit code $status: $(cat stderr)"
+    command -v gnuplot > /dev/null || unset 'files[3]'
+    for file in "${files[@]}"; do
+      [ "$(head -c 4 "out/$file")" != keep ] || fail "--overwrite did not replace out/$file"
+    done
     ;;
 
   *) fail "unknown case" ;;

@@ -176,14 +176,6 @@ std::string GnuplotComment(const std::string& text) {
   return "# " + line + (line.ends_with('\\') ? " \n" : "\n");
 }
 
-// A scene id as a file name: '/' (dt-1/15) would name a directory.
-std::string FileNameOf(std::string id) {
-  for (char& c : id) {
-    if (c == '/') c = '_';
-  }
-  return id;
-}
-
 std::string DataLine(const Row& r, int knob_value) {
   const auto number = [](double v) { return std::isnan(v) ? std::string("NaN") : Number(v); };
   std::string line = std::to_string(knob_value) + ' ' + number(r.ns_per_world_step);
@@ -194,6 +186,12 @@ std::string DataLine(const Row& r, int knob_value) {
 }
 
 }  // namespace
+
+std::string PlotFileName(std::string scene) {
+  // '/' (dt-1/15) would name a folder.
+  std::replace(scene.begin(), scene.end(), '/', '_');
+  return scene + ".png";
+}
 
 std::string SweepCsvHeader() {
   return "scene,knob,substeps,velocity_iterations,position_iterations,dt,worlds,threads,"
@@ -335,7 +333,7 @@ void WriteGnuplot(std::ostream& gp, const std::vector<Row>& rows, const SweepCon
         }
       }
     }
-    gp << "set output " << GnuplotString(FileNameOf(scene) + ".png") << '\n'
+    gp << "set output " << GnuplotString(PlotFileName(scene)) << '\n'
        << "set multiplot layout " << (panels.size() + 2) / 3 << ",3 title "
        << GnuplotString(scene +
                         ": error against cost, one knob varied at a time from the default "
