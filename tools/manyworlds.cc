@@ -8,7 +8,8 @@
 //   manyworlds scenes
 //   manyworlds sweep [--scenes A,B] [--worlds N] [--seconds S] [--small] ... (tools/sweep.h)
 //
-// Exit codes: 0 success, 1 the library refused something, 2 bad arguments.
+// Exit codes: 0 success, 1 the library, the file system or gnuplot refused
+// something (sweep: also an earlier report without --overwrite), 2 bad arguments.
 
 #include <algorithm>
 #include <chrono>
@@ -50,14 +51,15 @@ constexpr const char* kUsage =
     "  manyworlds scenes              lists the reference and stress scene ids\n"
     "  manyworlds sweep [--scenes A,B] [--worlds N] [--seconds S] [--threads N]\n"
     "                   [--sample-worlds N] [--passes N] [--min-time S] [--grid knobs|full]\n"
-    "                   [--out DIR] [--seed N] [--small] [--mass-range-limit R]\n"
+    "                   [--out DIR] [--overwrite] [--seed N] [--small] [--mass-range-limit R]\n"
     "      error against run time: steps every scene at each setting of substeps\n"
     "      (1 2 4 8), velocity (1 2 4 8 10) and position iterations (0 1 2), one knob\n"
     "      at a time from 1/10/2 (--grid full: every combination), and writes\n"
     "      DIR/sweep.csv, sweep.md, sweep.gp and, when gnuplot is installed, one PNG\n"
     "      per scene (defaults: every scene, 1024 worlds timed on 1 thread, 1 s\n"
-    "      simulated, errors over 16 worlds, out dir 'sweep'; --small: rackpinion and\n"
-    "      chain16, 64 worlds, 0.25 s, 2 values per knob; see docs/accuracy.md)\n";
+    "      simulated, errors over 16 worlds, out dir 'sweep', whose earlier report only\n"
+    "      --overwrite replaces; --small: rackpinion and chain16, 64 worlds, 0.25 s,\n"
+    "      2 values per knob; see docs/accuracy.md)\n";
 
 // The scene of --scene; a UsageError naming the option for an unknown id.
 Scene SceneOf(const Options& options) {

@@ -1,5 +1,6 @@
 // Command-line options of the manyworlds program's commands: "--name value",
-// "--name=value" and bare flags, checked against the options a command knows.
+// "--name=value" and bare flags, checked against the options a command knows;
+// each at most once.
 #pragma once
 
 #include <algorithm>
@@ -29,7 +30,7 @@ class Options {
         throw UsageError("unexpected argument '" + std::string(arg) + "'");
       }
       if (std::find(flags.begin(), flags.end(), arg) != flags.end()) {
-        values_[std::string(arg)] = "";
+        Set(arg, "");
         continue;
       }
       std::string_view value;
@@ -46,7 +47,7 @@ class Options {
         if (i + 1 >= argc) throw UsageError(std::string(arg) + " needs a value");
         value = argv[++i];
       }
-      values_[std::string(arg)] = std::string(value);
+      Set(arg, value);
     }
   }
 
@@ -92,6 +93,13 @@ class Options {
   }
 
  private:
+  // An option given twice is refused: which of the two was meant is a guess.
+  void Set(std::string_view name, std::string_view value) {
+    if (!values_.emplace(name, value).second) {
+      throw UsageError(std::string(name) + " given twice");
+    }
+  }
+
   std::map<std::string, std::string> values_;
 };
 

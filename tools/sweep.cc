@@ -2,19 +2,25 @@
 
 #include "tools/sweep.h"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <cstdlib>
+#include <cstring>
 #include <ctime>  // also POSIX clock_gettime
 #include <filesystem>
 #include <fstream>
 #include <limits>
 #include <span>
 #include <sstream>
+#include <stdexcept>
 #include <string>
+#include <system_error>
 #include <vector>
 
 #include "manyworlds/batch.h"
@@ -23,6 +29,7 @@
 #include "manyworlds/scenes.h"
 #include "reference/world.h"
 #include "tools/options.h"
+#include "tools/subprocess.h"
 #include "tools/sweep_metrics.h"
 #include "tools/sweep_report.h"
 
@@ -117,9 +124,10 @@ SweepConfig ConfigOf(int argc, char** argv) {
                         {"--scenes", "--worlds", "--sample-worlds", "--seconds", "--passes",
                          "--min-time", "--threads", "--grid", "--out", "--seed",
                          "--mass-range-limit"},
-                        {"--small"});
+                        {"--small", "--overwrite"});
   SweepConfig config;
   config.small = options.Has("--small");
+  config.overwrite = options.Has("--overwrite");
   // --small: the smoke test's size, a few seconds in all.
   config.scenes = SplitIds(options.Text(
       "--scenes", config.small ? "rackpinion,chain16" : ""));
@@ -288,12 +296,72 @@ void MeasureAccuracy(const Scene& scene, const SceneActions& actions, const Swee
                                 [](std::uint8_t bits) { return bits != 0; }));
 }
 
-bool GnuplotInstalled() { return std::system("command -v gnuplot > /dev/null 2>&1") == 0; }
+// ---- the output folder
+
+// The files the sweep writes in its output folder; gnuplot adds the plots.
+constexpr const char* kCsvFile = "sweep.csv";
+constexpr const char* kMarkdownFile = "sweep.md";
+constexpr const char* kGnuplotFile = "sweep.gp";
+
+// Creates the output folder, refuses to replace an earlier report without
+// --overwrite, and proves that the folder takes a new file: before the
+// stepping (minutes with the defaults) rather than after it. Throws naming
+// the folder or the file.
+void PrepareOutputFolder(const SweepConfig& config) {
+  const std::filesystem::path& folder = config.out;
+  std::error_code error;
+  std::filesystem::create_directories(folder, error);
+  if (error) {
+    throw std::runtime_error("cannot create the output folder '" + folder.string() +
+                             "': " + error.message());
+  }
+  if (!config.overwrite) {
+    std::vector<std::string> files = {kCsvFile, kMarkdownFile, kGnuplotFile};
+    for (const std::string& scene : config.scenes) files.push_back(PlotFileName(scene));
+    for (const std::string& file : files) {
+      const std::filesystem::path path = folder / file;
+      // symlink_status: a link to nowhere would be replaced too.
+      if (std::filesystem::exists(std::filesystem::symlink_status(path, error))) {
+        throw std::runtime_error("'" + path.string() +
+                                 "' exists: pass --overwrite to replace the earlier report");
+      }
+    }
+  }
+  // A file of our own, created and removed: whatever would refuse the
+  // reports (permissions, a read-only mount, no inode left) refuses it now.
+  const std::filesystem::path probe = folder / (".sweep-probe-" + std::to_string(::getpid()));
+  const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+  if (fd < 0) {
+    throw std::runtime_error("cannot write to the output folder '" + folder.string() +
+                             "': " + std::strerror(errno));
+  }
+  ::close(fd);
+  std::filesystem::remove(probe, error);
+}
+
+// Writes one report file with `write` and checks that every byte reached
+// it: a full disk or a file-size limit shows only when the stream is flushed
+// and closed. Throws naming the file, which it removes: a truncated CSV
+// must not pass for a report.
+template <typename Write>
+void WriteReport(const std::filesystem::path& path, Write write) {
+  errno = 0;
+  std::ofstream file(path);
+  write(file);
+  file.close();
+  if (file) return;
+  const int code = errno;
+  std::error_code ignored;
+  std::filesystem::remove(path, ignored);
+  throw std::runtime_error("could not write '" + path.string() + "'" +
+                           (code != 0 ? std::string(": ") + std::strerror(code) : ""));
+}
 
 }  // namespace
 
 int Sweep(int argc, char** argv) {
   const SweepConfig config = ConfigOf(argc, argv);
+  PrepareOutputFolder(config);
   const auto started = Clock::now();
   const std::vector<Knobs> settings = SettingsOf(ValuesOf(config.small), config.full_grid);
 
@@ -343,32 +411,23 @@ int Sweep(int argc, char** argv) {
   }
   const double wall = std::chrono::duration<double>(Clock::now() - started).count();
 
-  std::filesystem::create_directories(config.out);
-  {
-    std::ofstream csv(config.out / "sweep.csv");
-    WriteCsv(csv, rows, config, machine);
-  }
-  {
-    std::ofstream md(config.out / "sweep.md");
-    WriteMarkdown(md, rows, config, machine, wall);
-  }
-  {
-    std::ofstream gp(config.out / "sweep.gp");
-    WriteGnuplot(gp, rows, config, machine);
-  }
+  WriteReport(config.out / kCsvFile,
+              [&](std::ostream& csv) { WriteCsv(csv, rows, config, machine); });
+  WriteReport(config.out / kMarkdownFile,
+              [&](std::ostream& md) { WriteMarkdown(md, rows, config, machine, wall); });
+  WriteReport(config.out / kGnuplotFile,
+              [&](std::ostream& gp) { WriteGnuplot(gp, rows, config, machine); });
   std::printf("wrote %s/sweep.csv, sweep.md, sweep.gp (%zu settings, %.1f s)\n",
               config.out.c_str(), rows.size(), wall);
-  if (!GnuplotInstalled()) {
+  const std::filesystem::path gnuplot = FindOnPath("gnuplot");
+  if (gnuplot.empty()) {
     std::printf("gnuplot not found: no plots (apt-get install gnuplot-nox, then run "
                 "'gnuplot sweep.gp' in %s)\n",
                 config.out.c_str());
     return 0;
   }
-  const std::string plot = "cd '" + config.out.string() + "' && gnuplot sweep.gp";
-  if (std::system(plot.c_str()) != 0) {
-    std::fprintf(stderr, "manyworlds: gnuplot failed on %s/sweep.gp\n", config.out.c_str());
-    return 1;
-  }
+  // In the folder: sweep.gp names its PNGs relative to it.
+  RunInFolder(gnuplot, {kGnuplotFile}, config.out);
   std::printf("plotted %zu scene(s): %s/<scene>.png ('/' in an id as '_')\n",
               config.scenes.size(),
               config.out.c_str());

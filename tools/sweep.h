@@ -33,10 +33,20 @@
 // (the remedy of docs/stability.md); batch and reference then step the same
 // limited scene.
 //
+// Before it steps anything it creates DIR (--out), refuses to replace an
+// earlier report there (sweep.csv, sweep.md, sweep.gp, a scene's PNG) unless
+// --overwrite, and creates and removes a file there: an earlier report or a
+// folder it cannot write to is an error naming it (exit code 1) then, not
+// after the sweep.
+//
 // Writes DIR/sweep.csv (every setting), DIR/sweep.md (the tables) and
 // DIR/sweep.gp, a gnuplot script drawing DIR/<scene>.png: each metric against
-// ns per world-step, one curve per knob. gnuplot runs when it is installed;
-// without it the CSV and Markdown are still written (exit code 0).
+// ns per world-step, one curve per knob. A file not written in full (a full
+// disk shows at flush and close) is an error naming it (exit code 1) and is
+// removed; "wrote" is printed only once all three are. gnuplot runs when it
+// is on PATH, as `gnuplot sweep.gp` in DIR and without a shell
+// (tools/subprocess.h), so any folder name works; without it the CSV and
+// Markdown are still written (exit code 0).
 #pragma once
 
 #include <string>

@@ -148,12 +148,32 @@ constexpr int kMetricCount = int(std::size(kPlotMetrics));
 constexpr int kFirstMetricColumn = 3;
 constexpr int kDefaultColumn = kFirstMetricColumn + kMetricCount;
 
-// A scene id as a file name: '/' (dt-1/15) would name a directory.
-std::string FileNameOf(std::string id) {
-  for (char& c : id) {
-    if (c == '/') c = '_';
+// Text on one line: a line break in a gnuplot script ends the command (or the
+// comment) and starts a new one.
+std::string OneLine(std::string text) {
+  std::replace_if(text.begin(), text.end(), [](char c) { return c == '\n' || c == '\r'; }, ' ');
+  return text;
+}
+
+// Text as a gnuplot string. Single quotes: gnuplot substitutes neither
+// `command` nor @macro in them, and only '' is special.
+std::string GnuplotString(const std::string& text) {
+  std::string quoted = "'";
+  for (const char c : OneLine(text)) {
+    if (c == '\'') {
+      quoted += "''";
+    } else {
+      quoted += c;
+    }
   }
-  return id;
+  return quoted + '\'';
+}
+
+// Text as a gnuplot comment line; a backslash at its end would continue the
+// comment onto the next line.
+std::string GnuplotComment(const std::string& text) {
+  const std::string line = OneLine(text);
+  return "# " + line + (line.ends_with('\\') ? " \n" : "\n");
 }
 
 std::string DataLine(const Row& r, int knob_value) {
@@ -166,6 +186,12 @@ std::string DataLine(const Row& r, int knob_value) {
 }
 
 }  // namespace
+
+std::string PlotFileName(std::string scene) {
+  // '/' (dt-1/15) would name a folder.
+  std::replace(scene.begin(), scene.end(), '/', '_');
+  return scene + ".png";
+}
 
 std::string SweepCsvHeader() {
   return "scene,knob,substeps,velocity_iterations,position_iterations,dt,worlds,threads,"
@@ -256,11 +282,13 @@ void WriteMarkdown(std::ostream& md, const std::vector<Row>& rows, const SweepCo
 void WriteGnuplot(std::ostream& gp, const std::vector<Row>& rows, const SweepConfig& config,
                   const Machine& machine) {
   gp << "# Error against ns per world-step, one curve per knob: written by\n"
-     << "# " << config.command_line << "\n# Run: gnuplot sweep.gp (in this directory).\n"
+     << GnuplotComment(config.command_line) << "# Run: gnuplot sweep.gp (in this directory).\n"
      << "set terminal pngcairo noenhanced size 1500,900 font ',10'\n"
      << "set logscale xy\nset grid\nset format y '%.0e'\nset key below horizontal\n"
-     << "set xlabel 'ns per world-step (" << config.worlds << " worlds, " << machine.threads
-     << " thread(s), " << machine.target << ")'\n";
+     << "set xlabel "
+     << GnuplotString("ns per world-step (" + std::to_string(config.worlds) + " worlds, " +
+                      std::to_string(machine.threads) + " thread(s), " + machine.target + ")")
+     << '\n';
   std::vector<std::string> scenes;
   for (const Row& r : rows) {
     if (std::find(scenes.begin(), scenes.end(), r.scene) == scenes.end()) {
@@ -305,13 +333,15 @@ void WriteGnuplot(std::ostream& gp, const std::vector<Row>& rows, const SweepCon
         }
       }
     }
-    gp << "set output '" << FileNameOf(scene) << ".png'\n"
-       << "set multiplot layout " << (panels.size() + 2) / 3 << ",3 title '" << scene
-       << ": error against cost, one knob varied at a time from the default (labels: its "
-          "value)'\n";
+    gp << "set output " << GnuplotString(PlotFileName(scene)) << '\n'
+       << "set multiplot layout " << (panels.size() + 2) / 3 << ",3 title "
+       << GnuplotString(scene +
+                        ": error against cost, one knob varied at a time from the default "
+                        "(labels: its value)")
+       << '\n';
     for (int m : panels) {
       const int column = kFirstMetricColumn + m;
-      gp << "set title '" << kPlotMetrics[m].title << "'\nplot ";
+      gp << "set title " << GnuplotString(kPlotMetrics[m].title) << "\nplot ";
       if (config.full_grid) {
         gp << '$' << id << "_grid using 2:" << column
            << " with points pt 7 ps 0.4 lc rgb '#bbbbbb' title 'every combination', ";

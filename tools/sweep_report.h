@@ -54,6 +54,7 @@ struct SweepConfig {
   int threads = 0;
   bool full_grid = false;
   bool small = false;
+  bool overwrite = false;  // replace an earlier report in `out`
   std::uint64_t seed = 0;
   double mass_range_limit = 0.0;  // LimitMassRange on every scene first; 0: off
   std::filesystem::path out;
@@ -122,7 +123,10 @@ void WriteCsv(std::ostream& csv, const std::vector<Row>& rows, const SweepConfig
 // `wall_seconds`: what the whole sweep took.
 void WriteMarkdown(std::ostream& md, const std::vector<Row>& rows, const SweepConfig& config,
                    const Machine& machine, double wall_seconds);
-// A gnuplot script with the data inline, drawing <scene>.png in its directory.
+// The plot of a scene in the report's folder: <scene>.png, '/' in the id as '_'.
+std::string PlotFileName(std::string scene);
+// A gnuplot script with the data inline, drawing PlotFileName(scene) in its
+// directory.
 void WriteGnuplot(std::ostream& gp, const std::vector<Row>& rows, const SweepConfig& config,
                   const Machine& machine);
 
