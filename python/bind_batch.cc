@@ -1,0 +1,399 @@
+// Python bindings: Batch (construction, step, state, actions, resets,
+// snapshots, health, reports). Per-world parameters are in
+// bind_batch_parameters.cc.
+//
+// Arrays are world-major, [world, ...], float32, and never converted: every
+// numpy argument goes through numpy_checks.h and is refused, by name, before
+// anything is written. Actions (forces, torques, motor targets) are never
+// refused for NaN or infinity: the world is flagged NON_FINITE_INPUT at the
+// next step instead (batch.h, WorldHealthBits), as in C++.
+
+#include <algorithm>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "manyworlds/batch.h"
+#include "python/bindings.h"
+#include "python/numpy_checks.h"
+
+namespace manyworlds::python {
+namespace {
+
+py::ssize_t Worlds(const Batch& batch) { return static_cast<py::ssize_t>(batch.world_count()); }
+py::ssize_t Bodies(const Batch& batch) { return static_cast<py::ssize_t>(batch.body_count()); }
+
+// A new float32 array of `shape` for a result, unless the caller passed one
+// (`out`) to fill without allocating; either way checked like any argument.
+py::array OutputArray(py::object out, const Shape& shape) {
+  if (out.is_none()) return py::array_t<float>(shape);
+  return py::reinterpret_borrow<py::array>(out);
+}
+
+// The mask the C++ Reset takes: None means every world.
+std::vector<std::uint8_t> EveryWorld(const Batch& batch) {
+  return std::vector<std::uint8_t>(batch.world_count(), 1);
+}
+
+void BindConstruction(py::class_<Batch>& cls) {
+  cls.def(py::init([](const Scene& scene, std::size_t num_worlds, int threads, std::int64_t target,
+                      std::size_t blocks_per_task) {
+            BatchOptions options;
+            options.threads = threads;
+            options.target = target;
+            options.blocks_per_task = blocks_per_task;
+            return Batch(scene, num_worlds, options);
+          }),
+          py::arg("scene"), py::arg("num_worlds"), py::arg("threads") = 0, py::arg("target") = 0,
+          py::arg("blocks_per_task") = 0,
+          "num_worlds copies of `scene`. threads 0: every core; target 0: the best SIMD "
+          "target of this CPU. Raises SceneError (a ValueError) naming the body or "
+          "constraint and field of a bad scene.")
+      .def(py::init([](const Scene& scene, std::size_t num_worlds, const BatchOptions& options) {
+             return Batch(scene, num_worlds, options);
+           }),
+           py::arg("scene"), py::arg("num_worlds"), py::arg("options"))
+      .def_property_readonly("num_worlds", &Batch::world_count)
+      .def_property_readonly("num_bodies", &Batch::body_count)
+      .def_property_readonly("num_constraints", &Batch::constraint_count)
+      .def_property_readonly(
+          "scene", [](const Batch& batch) { return Scene(batch.scene()); }, "A copy of the scene.")
+      .def_property_readonly("threads", &Batch::threads)
+      .def_property_readonly("simd_target", &Batch::SimdTarget, "e.g. 'AVX3'")
+      .def_property_readonly("simd_lanes", &Batch::SimdLanes, "floats per vector")
+      .def_property_readonly("bytes_per_world", &Batch::BytesPerWorld)
+      .def("__repr__", [](const Batch& batch) {
+        return "Batch(" + std::to_string(batch.world_count()) + " worlds, " +
+               std::to_string(batch.body_count()) + " bodies, " +
+               std::to_string(batch.constraint_count()) + " constraints, " + batch.SimdTarget() +
+               ")";
+      });
+}
+
+void BindStepAndState(py::class_<Batch>& cls) {
+  cls.def(
+         "step",
+         [](Batch& batch, const StepSettings& settings) {
+           // A copy: another Python thread may change the settings object
+           // while this one steps without the GIL.
+           const StepSettings copy = settings;
+           // The step runs on TBB's threads without the GIL: other Python
+           // threads go on meanwhile (a call on this same Batch from one of
+           // them raises RuntimeError: a Batch is one thread at a time).
+           py::gil_scoped_release release;
+           batch.Step(copy);
+         },
+         py::arg("settings") = StepSettings{},
+         "Steps every world by settings.delta_time (the GIL is released meanwhile).")
+      .def(
+          "get_state",
+          [](const Batch& batch, py::object out) {
+            const Shape shape{Worlds(batch), Bodies(batch), kStateFloatsPerBody};
+            py::array result = OutputArray(out, shape);
+            batch.GetState(OutputArgument<float>(result, "out", shape));
+            return result;
+          },
+          py::arg("out") = py::none(),
+          "Every body of every world: float32 [world, body, 13] = position (3), rotation "
+          "quaternion x, y, z, w (4), linear velocity (3), angular velocity (3). With out=, "
+          "fills that array instead of allocating one.")
+      .def(
+          "set_state",
+          [](Batch& batch, py::handle state, py::handle mask) {
+            batch.SetState(ArrayArgument<float>(
+                               state, "state", {Worlds(batch), Bodies(batch), kStateFloatsPerBody}),
+                           MaskArgument(mask, "mask", batch.world_count()));
+          },
+          py::arg("state"), py::arg("mask") = py::none(),
+          "Writes float32 [world, body, 13] into every world, or those where mask != 0. "
+          "Solver warm-start impulses are kept (snapshots carry everything).")
+      .def(
+          "get_field",
+          [](const Batch& batch, StateField field, py::object out) {
+            const Shape shape{Worlds(batch), Bodies(batch),
+                              static_cast<py::ssize_t>(StateFieldSize(field))};
+            py::array result = OutputArray(out, shape);
+            batch.GetField(field, OutputArgument<float>(result, "out", shape));
+            return result;
+          },
+          py::arg("field"), py::arg("out") = py::none(),
+          "One StateField of every body: float32 [world, body, state_field_size(field)].")
+      .def(
+          "set_field",
+          [](Batch& batch, StateField field, py::handle values) {
+            batch.SetField(field,
+                           ArrayArgument<float>(values, "values",
+                                                {Worlds(batch), Bodies(batch),
+                                                 static_cast<py::ssize_t>(StateFieldSize(field))}));
+          },
+          py::arg("field"), py::arg("values"));
+}
+
+// A target of three or four floats per world, written through the per-world
+// setter `set` (SetTargetOrientation etc.; the C++ API has no array form).
+template <std::size_t N, class Target>
+void SetEveryWorld(Batch& batch, std::int64_t constraint, py::handle values, const char* name,
+                   void (Batch::*set)(std::size_t, std::size_t, Target)) {
+  const std::size_t c = CheckedIndex(constraint, batch.constraint_count(), "constraint");
+  const auto data =
+      ArrayArgument<float>(values, name, {Worlds(batch), static_cast<py::ssize_t>(N)});
+  if constexpr (N == 4) {
+    // The only per-world refusal of a target: a zero quaternion. Found
+    // first, so that nothing is written (a wrong constraint type is refused
+    // at world 0, before any write, by the setter itself).
+    for (std::size_t w = 0; w < batch.world_count(); ++w) {
+      const float* q = data.data() + w * 4;
+      if (q[0] == 0.0f && q[1] == 0.0f && q[2] == 0.0f && q[3] == 0.0f) {
+        throw py::value_error(std::string(name) + ": world " + std::to_string(w) +
+                              ": target orientation is a zero quaternion (nothing was written)");
+      }
+    }
+  }
+  for (std::size_t w = 0; w < batch.world_count(); ++w) {
+    Target target;
+    std::copy_n(data.data() + w * N, N, target.begin());
+    (batch.*set)(w, c, target);
+  }
+}
+
+void BindRotationAndTranslationTargets(py::class_<Batch>& cls) {
+  cls.def(
+         "set_target_orientations",
+         [](Batch& batch, std::int64_t constraint, py::handle orientations) {
+           SetEveryWorld<4>(batch, constraint, orientations, "orientations",
+                            &Batch::SetTargetOrientation);
+         },
+         py::arg("constraint"), py::arg("orientations"),
+         "Rotation drive targets of a swing-twist or six-DOF constraint: body 2's frame in "
+         "body 1's, float32 [world, 4] quaternions (x, y, z, w), normalised; a zero "
+         "quaternion is refused.")
+      .def(
+          "set_target_angular_velocities",
+          [](Batch& batch, std::int64_t constraint, py::handle velocities) {
+            SetEveryWorld<3>(batch, constraint, velocities, "velocities",
+                             &Batch::SetTargetAngularVelocity);
+          },
+          py::arg("constraint"), py::arg("velocities"),
+          "Swing-twist or six-DOF: rad/s about body 2's frame axes, float32 [world, 3].")
+      .def(
+          "set_target_translations",
+          [](Batch& batch, std::int64_t constraint, py::handle translations) {
+            SetEveryWorld<3>(batch, constraint, translations, "translations",
+                             &Batch::SetTargetTranslation);
+          },
+          py::arg("constraint"), py::arg("translations"),
+          "Six-DOF: target displacement (m) in body 1's frame, float32 [world, 3].")
+      .def(
+          "set_target_linear_velocities",
+          [](Batch& batch, std::int64_t constraint, py::handle velocities) {
+            SetEveryWorld<3>(batch, constraint, velocities, "velocities",
+                             &Batch::SetTargetLinearVelocity);
+          },
+          py::arg("constraint"), py::arg("velocities"),
+          "Six-DOF: target velocity (m/s) in body 1's frame, float32 [world, 3].");
+}
+
+void BindActions(py::class_<Batch>& cls) {
+  cls.def(
+         "set_forces",
+         [](Batch& batch, py::handle forces) {
+           batch.SetForces(
+               ArrayArgument<float>(forces, "forces", {Worlds(batch), Bodies(batch), 3}));
+         },
+         py::arg("forces"),
+         "Forces (N, world space, through the centre of mass) for the next step: float32 "
+         "[world, body, 3]; static bodies' entries are ignored. Cleared by the step.")
+      .def(
+          "set_torques",
+          [](Batch& batch, py::handle torques) {
+            batch.SetTorques(
+                ArrayArgument<float>(torques, "torques", {Worlds(batch), Bodies(batch), 3}));
+          },
+          py::arg("torques"), "Torques (N m) for the next step: float32 [world, body, 3].")
+      .def(
+          "set_body_forces",
+          [](Batch& batch, std::int64_t body, py::handle forces) {
+            const std::size_t b = CheckedIndex(body, batch.body_count(), "body");
+            batch.SetForces(b, ArrayArgument<float>(forces, "forces", {Worlds(batch), 3}));
+          },
+          py::arg("body"), py::arg("forces"),
+          "The force on one body of every world for the next step: float32 [world, 3]. "
+          "The fast path for RL actions.")
+      .def(
+          "set_body_torques",
+          [](Batch& batch, std::int64_t body, py::handle torques) {
+            const std::size_t b = CheckedIndex(body, batch.body_count(), "body");
+            batch.SetTorques(b, ArrayArgument<float>(torques, "torques", {Worlds(batch), 3}));
+          },
+          py::arg("body"), py::arg("torques"), "float32 [world, 3].")
+      .def(
+          "set_target_velocities",
+          [](Batch& batch, std::int64_t constraint, py::handle velocities) {
+            const std::size_t c = CheckedIndex(constraint, batch.constraint_count(), "constraint");
+            batch.SetTargetVelocities(
+                c, PerWorldFloats(velocities, "velocities", batch.world_count()).Span());
+          },
+          py::arg("constraint"), py::arg("velocities"),
+          "Motor target velocity of a hinge (rad/s), slider (m/s) or path (m/s) per world: "
+          "float32 [world] or one number for every world.")
+      .def(
+          "set_target_positions",
+          [](Batch& batch, std::int64_t constraint, py::handle positions) {
+            const std::size_t c = CheckedIndex(constraint, batch.constraint_count(), "constraint");
+            batch.SetTargetPositions(
+                c, PerWorldFloats(positions, "positions", batch.world_count()).Span());
+          },
+          py::arg("constraint"), py::arg("positions"),
+          "Motor target position of a hinge (rad), slider (m) or path (fraction) per world, "
+          "clamped into the limits: float32 [world] or one number.");
+  BindRotationAndTranslationTargets(cls);
+}
+
+void BindResetsAndSnapshots(py::class_<Batch>& cls) {
+  cls.def(
+         "reset",
+         [](Batch& batch, py::handle mask) {
+           const auto selected = MaskArgument(mask, "mask", batch.world_count());
+           if (selected.empty()) {
+             batch.Reset(EveryWorld(batch));
+           } else {
+             batch.Reset(selected);
+           }
+         },
+         py::arg("mask") = py::none(),
+         "Puts the worlds where mask != 0 (None: every world) back to the scene's initial "
+         "state: state, warm-start impulses, motor targets and per-world parameters.")
+      .def(
+          "reset_to",
+          [](Batch& batch, py::handle mask, py::handle state) {
+            const auto selected = MaskArgument(mask, "mask", batch.world_count());
+            const auto states = ArrayArgument<float>(
+                state, "state", {Worlds(batch), Bodies(batch), kStateFloatsPerBody});
+            if (selected.empty()) {
+              batch.ResetTo(EveryWorld(batch), states);
+            } else {
+              batch.ResetTo(selected, states);
+            }
+          },
+          py::arg("mask"), py::arg("state"),
+          "reset(mask), then the masked worlds' rows of state (float32 [world, body, 13]).");
+
+  py::class_<BatchSnapshot>(cls, "Snapshot",
+                            "Every world of a Batch exactly as it was (Batch.snapshot()). Its "
+                            "bytes fit only a Batch of the same scene, world count and build.")
+      .def(py::init<>())
+      .def_property_readonly("num_worlds", &BatchSnapshot::world_count)
+      .def_property_readonly("empty", &BatchSnapshot::empty)
+      .def(
+          "bytes",
+          [](const BatchSnapshot& snapshot) {
+            const auto data = snapshot.bytes();
+            return py::bytes(reinterpret_cast<const char*>(data.data()), data.size());
+          },
+          "The snapshot as bytes (to store; read back with Snapshot.from_bytes).")
+      .def_static(
+          "from_bytes",
+          [](const py::buffer& data) {
+            const py::buffer_info info = data.request();
+            if (info.ndim != 1 || info.itemsize != 1 || info.strides[0] != 1) {
+              throw py::type_error("data: expected bytes or a contiguous byte buffer");
+            }
+            return BatchSnapshot::FromBytes(std::span<const std::byte>(
+                static_cast<const std::byte*>(info.ptr), static_cast<std::size_t>(info.size)));
+          },
+          py::arg("data"), "A snapshot from bytes(); ValueError unless they are a whole one.")
+      .def(py::pickle(
+          [](const BatchSnapshot& snapshot) {
+            const auto data = snapshot.bytes();
+            return py::make_tuple(
+                py::bytes(reinterpret_cast<const char*>(data.data()), data.size()));
+          },
+          [](const py::tuple& state) {
+            const std::string data = state[0].cast<std::string>();
+            return BatchSnapshot::FromBytes(std::span<const std::byte>(
+                reinterpret_cast<const std::byte*>(data.data()), data.size()));
+          }));
+
+  cls.def("snapshot", &Batch::Snapshot, "Every world, bit for bit (a Batch.Snapshot).")
+      .def(
+          "restore",
+          [](Batch& batch, const BatchSnapshot& snapshot, py::handle mask) {
+            batch.Restore(snapshot, MaskArgument(mask, "mask", batch.world_count()));
+          },
+          py::arg("snapshot"), py::arg("mask") = py::none(),
+          "Every world (mask None) or those where mask != 0 back to the snapshot, bit for "
+          "bit; ValueError, changing nothing, for a snapshot of another batch layout.");
+}
+
+void BindReports(py::class_<Batch>& cls) {
+  cls.def_property_readonly(
+         "health",
+         [](const Batch& batch) {
+           const auto health = batch.WorldHealth();
+           py::array_t<std::uint8_t> result(static_cast<py::ssize_t>(health.size()));
+           std::copy(health.begin(), health.end(), result.mutable_data());
+           return result;
+         },
+         "uint8 [world]: 0 when healthy, else an OR of WorldHealthBits (a copy, after the "
+         "last step).")
+      .def_property_readonly("unhealthy_world_count", &Batch::UnhealthyWorldCount)
+      .def(
+          "plan",
+          [](const Batch& batch, std::optional<StepSettings> settings) {
+            return settings ? batch.Plan(*settings) : batch.Plan();
+          },
+          py::arg("settings") = py::none(),
+          "What one step runs, per constraint (for `settings`, default those of the last "
+          "step).")
+      .def(
+          "max_constraint_error",
+          [](const Batch& batch, std::int64_t world) {
+            return batch.MaxConstraintError(CheckedIndex(world, batch.world_count(), "world"));
+          },
+          py::arg("world"), "Largest position error of any constraint (m or rad).")
+      .def(
+          "max_constraint_errors",
+          [](const Batch& batch) {
+            py::array_t<float> result(Worlds(batch));
+            float* out = result.mutable_data();
+            for (std::size_t w = 0; w < batch.world_count(); ++w) {
+              out[w] = batch.MaxConstraintError(w);
+            }
+            return result;
+          },
+          "max_constraint_error of every world: float32 [world].")
+      .def(
+          "constraint_error",
+          [](const Batch& batch, std::int64_t world, std::int64_t constraint) {
+            return batch.ConstraintError(
+                CheckedIndex(world, batch.world_count(), "world"),
+                CheckedIndex(constraint, batch.constraint_count(), "constraint"));
+          },
+          py::arg("world"), py::arg("constraint"), "Position error of one constraint.")
+      .def(
+          "constraint_velocity_error",
+          [](const Batch& batch, std::int64_t world, std::int64_t constraint) {
+            return batch.ConstraintVelocityError(
+                CheckedIndex(world, batch.world_count(), "world"),
+                CheckedIndex(constraint, batch.constraint_count(), "constraint"));
+          },
+          py::arg("world"), py::arg("constraint"), "|J v| of its equality rows.");
+}
+
+}  // namespace
+
+void BindBatch(py::module_& m) {
+  py::class_<Batch> cls(m, "Batch",
+                        "N copies of a scene, stepped together, one SIMD lane per world. Not "
+                        "thread-safe: call a Batch from one thread at a time (concurrent use "
+                        "raises RuntimeError).");
+  BindConstruction(cls);
+  BindStepAndState(cls);
+  BindActions(cls);
+  BindResetsAndSnapshots(cls);
+  BindReports(cls);
+  BindParameters(cls);
+}
+
+}  // namespace manyworlds::python
