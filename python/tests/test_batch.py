@@ -1,0 +1,256 @@
+"""Batch from Python: stepping, state arrays, actions, resets, snapshots,
+health and reports, compared bit for bit where the C++ library promises bits."""
+
+import pickle
+import threading
+
+import numpy as np
+import pytest
+
+import manyworlds as mw
+from conftest import (WORLDS, assert_same_bits, bits, motor_hinge_scene, random_cart_forces)
+
+CART = mw.reference_scene.CART
+
+
+def step_with_forces(batch, forces_per_step):
+    for forces in forces_per_step:
+        batch.set_body_forces(CART, forces)
+        batch.step()
+
+
+def test_properties(cartpole):
+    assert (cartpole.num_worlds, cartpole.num_bodies, cartpole.num_constraints) == (WORLDS, 3, 2)
+    assert cartpole.simd_target == mw.dispatched_target()
+    assert cartpole.simd_lanes >= 1 and cartpole.bytes_per_world > 0 and cartpole.threads >= 1
+    assert cartpole.scene.bodies == mw.make_scene("cartpole").bodies
+    assert "pole hinge" in cartpole.plan()
+    assert repr(cartpole).startswith(f"Batch({WORLDS} worlds, 3 bodies, 2 constraints")
+    assert mw.Batch(mw.make_scene("cartpole"), 16, threads=1).threads == 1
+    assert mw.Batch(mw.make_scene("cartpole"), 16, mw.BatchOptions(threads=1)).threads == 1
+
+
+def test_state_arrays(cartpole):
+    state = cartpole.get_state()
+    assert state.shape == (WORLDS, 3, 13) and state.dtype == np.float32
+    scene = mw.make_scene("cartpole")
+    for body_index, body in enumerate(scene.bodies):
+        np.testing.assert_allclose(state[:, body_index, 0:3], np.tile(body.position, (WORLDS, 1)))
+        np.testing.assert_allclose(state[:, body_index, 3:7], np.tile(body.rotation, (WORLDS, 1)))
+    cartpole.step()
+    out = np.full((WORLDS, 3, 13), np.nan, np.float32)
+    assert cartpole.get_state(out=out) is out
+    assert_same_bits(out, cartpole.get_state())
+    for field in mw.StateField.__members__.values():
+        offset, size = mw.state_field_offset(field), mw.state_field_size(field)
+        values = cartpole.get_field(field)
+        assert values.shape == (WORLDS, 3, size)
+        assert_same_bits(values, out[:, :, offset:offset + size])
+
+
+def test_set_state_round_trip_changes_no_bit(cartpole):
+    rng = np.random.default_rng(0)
+    step_with_forces(cartpole, [random_cart_forces(rng, WORLDS) for _ in range(5)])
+    before = cartpole.get_state()
+    cartpole.set_state(before)
+    assert_same_bits(cartpole.get_state(), before)
+    # With a mask only the masked worlds take the new state.
+    moved = before.copy()
+    moved[:, :, 7:10] += 1.0
+    moved[:, 0, 7:10] = 0.0  # the static world body stays at rest anyway
+    mask = np.zeros(WORLDS, bool)
+    mask[[2, 17]] = True
+    cartpole.set_state(moved, mask)
+    after = cartpole.get_state()
+    assert_same_bits(after[mask], moved[mask])
+    assert_same_bits(after[~mask], before[~mask])
+    velocities = cartpole.get_field(mw.StateField.LINEAR_VELOCITY)
+    velocities[:, 1, 0] = 2.5
+    cartpole.set_field(mw.StateField.LINEAR_VELOCITY, velocities)
+    assert np.all(cartpole.get_state()[:, 1, 7] == np.float32(2.5))
+
+
+def test_same_actions_give_the_same_bits():
+    rng = np.random.default_rng(2)
+    forces = [random_cart_forces(rng, WORLDS) for _ in range(100)]
+    scene = mw.make_scene("cartpole")
+    batches = [mw.Batch(scene, WORLDS), mw.Batch(scene, WORLDS, threads=1),
+               mw.Batch(scene, WORLDS, threads=2, blocks_per_task=1)]
+    for batch in batches:
+        step_with_forces(batch, forces)
+    for batch in batches[1:]:
+        assert_same_bits(batch.get_state(), batches[0].get_state())
+
+
+def test_numpy_actions_match_the_cpp_scene_actions():
+    scene = mw.make_scene("cartpole")
+    from_cpp, from_numpy = mw.Batch(scene, WORLDS), mw.Batch(scene, WORLDS)
+    actions = mw.SceneActions("cartpole")
+    worlds = np.arange(WORLDS)
+    for step in range(60):
+        actions.apply(from_cpp, step, 7)
+        forces = np.zeros((WORLDS, 3), np.float32)
+        forces[:, 0] = [mw.cartpole_force(7, w, step) for w in worlds]
+        from_numpy.set_body_forces(CART, forces)
+        from_cpp.step()
+        from_numpy.step()
+    assert_same_bits(from_cpp.get_state(), from_numpy.get_state())
+
+
+def test_whole_force_array_equals_per_body_form():
+    rng = np.random.default_rng(3)
+    scene = mw.make_scene("cartpole")
+    per_body, whole = mw.Batch(scene, WORLDS), mw.Batch(scene, WORLDS)
+    for _ in range(20):
+        forces, torques = random_cart_forces(rng, WORLDS), random_cart_forces(rng, WORLDS)
+        per_body.set_body_forces(CART, forces)
+        per_body.set_body_torques(mw.reference_scene.POLE, torques)
+        all_forces = np.zeros((WORLDS, 3, 3), np.float32)
+        all_torques = np.zeros((WORLDS, 3, 3), np.float32)
+        all_forces[:, CART] = forces
+        all_torques[:, mw.reference_scene.POLE] = torques
+        whole.set_forces(all_forces)
+        whole.set_torques(all_torques)
+        per_body.step()
+        whole.step()
+    assert_same_bits(per_body.get_state(), whole.get_state())
+
+
+def test_motor_targets_drive_the_hinge():
+    batch = mw.Batch(motor_hinge_scene(mw.MotorState.VELOCITY), WORLDS)
+    targets = np.linspace(-2, 2, WORLDS).astype(np.float32)
+    for _ in range(30):
+        batch.set_target_velocities(0, targets)
+        batch.step(mw.StepSettings(gravity=(0, 0, 0)))
+    spin = batch.get_field(mw.StateField.ANGULAR_VELOCITY)[:, 1, 2]
+    np.testing.assert_allclose(spin, targets, atol=1e-3)
+    for _ in range(30):
+        batch.set_target_velocities(0, 0.5)  # one number for every world
+        batch.step(mw.StepSettings(gravity=(0, 0, 0)))
+    np.testing.assert_allclose(batch.get_field(mw.StateField.ANGULAR_VELOCITY)[:, 1, 2], 0.5,
+                               atol=1e-3)
+
+    batch = mw.Batch(motor_hinge_scene(mw.MotorState.POSITION), WORLDS)
+    angles = np.linspace(-1, 1, WORLDS).astype(np.float32)
+    for _ in range(300):
+        batch.set_target_positions(0, angles)
+        batch.step(mw.StepSettings(gravity=(0, 0, 0)))
+    rotation = batch.get_field(mw.StateField.ROTATION)[:, 1]
+    np.testing.assert_allclose(2 * np.arctan2(rotation[:, 2], rotation[:, 3]), angles, atol=1e-2)
+
+
+def test_reset_changes_only_masked_worlds(cartpole):
+    initial = cartpole.get_state()
+    rng = np.random.default_rng(4)
+    step_with_forces(cartpole, [random_cart_forces(rng, WORLDS) for _ in range(30)])
+    stepped = cartpole.get_state()
+    mask = np.zeros(WORLDS, np.uint8)
+    mask[[0, 15, 16, 63]] = 1
+    cartpole.reset(mask)
+    after = cartpole.get_state()
+    selected = mask.astype(bool)
+    assert_same_bits(after[selected], initial[selected])
+    assert_same_bits(after[~selected], stepped[~selected])
+    cartpole.reset()  # every world
+    assert_same_bits(cartpole.get_state(), initial)
+
+    target = stepped.copy()
+    cartpole.reset_to(mask, target)
+    after = cartpole.get_state()
+    assert_same_bits(after[selected], target[selected])
+    assert_same_bits(after[~selected], initial[~selected])
+
+
+def test_snapshot_restore_is_exact(cartpole):
+    rng = np.random.default_rng(5)
+    first = [random_cart_forces(rng, WORLDS) for _ in range(10)]
+    then = [random_cart_forces(rng, WORLDS) for _ in range(10)]
+    step_with_forces(cartpole, first)
+    snapshot = cartpole.snapshot()
+    assert snapshot.num_worlds == WORLDS and not snapshot.empty
+    saved = cartpole.get_state()
+    step_with_forces(cartpole, then)
+    continued = cartpole.get_state()
+
+    cartpole.restore(snapshot)
+    assert_same_bits(cartpole.get_state(), saved)
+    step_with_forces(cartpole, then)  # warm starts come back too: the same bits
+    assert_same_bits(cartpole.get_state(), continued)
+
+    for copy in (mw.Batch.Snapshot.from_bytes(snapshot.bytes()),
+                 mw.BatchSnapshot.from_bytes(bytearray(snapshot.bytes())),
+                 pickle.loads(pickle.dumps(snapshot))):
+        assert copy.bytes() == snapshot.bytes()
+        cartpole.restore(copy)
+        assert_same_bits(cartpole.get_state(), saved)
+
+    mask = np.zeros(WORLDS, bool)
+    mask[3] = True
+    step_with_forces(cartpole, then)
+    cartpole.restore(snapshot, mask)
+    after = cartpole.get_state()
+    assert_same_bits(after[3], saved[3])
+    assert_same_bits(after[4], continued[4])
+
+
+def test_nan_actions_flag_their_world_only(cartpole):
+    clean = mw.Batch(mw.make_scene("cartpole"), WORLDS)
+    forces = np.zeros((WORLDS, 3), np.float32)
+    forces[9, 0] = np.nan  # actions are never refused: the world is flagged
+    cartpole.set_body_forces(CART, forces)
+    clean.set_body_forces(CART, np.zeros((WORLDS, 3), np.float32))
+    cartpole.step()
+    clean.step()
+    health = cartpole.health
+    assert health.dtype == np.uint8 and health.shape == (WORLDS,)
+    assert health[9] & mw.WorldHealthBits.NON_FINITE_INPUT
+    assert np.count_nonzero(health) == 1 and cartpole.unhealthy_world_count == 1
+    others = np.arange(WORLDS) != 9
+    assert_same_bits(cartpole.get_state()[others], clean.get_state()[others])
+    # Step settings may reset flagged worlds.
+    cartpole.set_body_forces(CART, forces)
+    cartpole.step(mw.StepSettings(unhealthy_worlds=mw.UnhealthyWorlds.RESET))
+    initial = mw.Batch(mw.make_scene("cartpole"), 16).get_state()
+    assert_same_bits(cartpole.get_state()[9], initial[9])
+
+
+def test_constraint_errors(cartpole):
+    cartpole.step()
+    errors = cartpole.max_constraint_errors()
+    assert errors.shape == (WORLDS,) and errors.dtype == np.float32
+    assert errors[5] == np.float32(cartpole.max_constraint_error(5))
+    assert cartpole.constraint_error(5, 1) >= 0 and cartpole.constraint_velocity_error(5, 1) >= 0
+
+
+def test_step_releases_the_gil_and_concurrent_use_raises():
+    """A step on one thread runs while Python goes on on another; a call on
+    the same Batch from that other thread meanwhile raises RuntimeError."""
+    batch = mw.Batch(mw.make_scene("chain64"), 4096, threads=1)
+    slow = mw.StepSettings(velocity_iterations=200, substeps=4)
+    started, done = threading.Event(), threading.Event()
+    errors = []
+    out = np.empty((4096, batch.num_bodies, 13), np.float32)
+
+    def step():
+        started.set()
+        try:
+            batch.step(slow)
+        except Exception as error:  # noqa: BLE001 - reported below
+            errors.append(error)
+        done.set()
+
+    thread = threading.Thread(target=step)
+    thread.start()
+    started.wait()
+    refused = None
+    while not done.is_set():  # only reachable while stepping if the GIL is free
+        try:
+            batch.get_state(out=out)
+        except RuntimeError as error:
+            refused = error
+            break
+    thread.join()
+    assert not errors, errors
+    assert refused is not None, "the step ended before the other thread could run"
+    assert "thread" in str(refused)
+    batch.get_state(out=out)  # fine again afterwards
