@@ -271,6 +271,36 @@ void Batch::Impl::ReadState(std::size_t world, std::size_t body, float* out) con
 
 namespace {
 
+// Columns [first, first + kCount) of every body's 13-float state row (in
+// StateField order), into out[world][body][kCount]: block by block and body
+// by body, each of the body's lane arrays located once per block, and the
+// count a constant so that the copy of a row unrolls. Reading observations
+// every step is part of an RL loop's cost next to Step
+// (python/tests/bench_step_loop.py): world by world and body by body, a
+// GetState of 4096 cartpoles took a sixth of their Step (110 us of 680),
+// this way 50 us; GetField of positions 140 us, now 17.
+template <std::size_t kCount>
+void ReadStateColumns(const Batch::Impl& batch, std::size_t first, float* out) {
+  const std::size_t worlds = batch.world_count_, bodies = batch.plan_.bodies.size();
+  for (std::size_t block_first = 0; block_first < worlds; block_first += kLaneWidth) {
+    const std::size_t lanes = std::min(kLaneWidth, worlds - block_first);
+    for (std::size_t b = 0; b < bodies; ++b) {
+      const BodyLanes& body = batch.In<BodyLanes>(block_first, batch.plan_.bodies[b].offset);
+      const LaneArray* const row[kStateFloatsPerBody] = {
+          &body.position.x,         &body.position.y,         &body.position.z,
+          &body.rotation.x,         &body.rotation.y,         &body.rotation.z,
+          &body.rotation.w,         &body.linear_velocity.x,  &body.linear_velocity.y,
+          &body.linear_velocity.z,  &body.angular_velocity.x, &body.angular_velocity.y,
+          &body.angular_velocity.z};
+      const LaneArray* const* columns = row + first;
+      for (std::size_t l = 0; l < lanes; ++l) {
+        float* values = out + ((block_first + l) * bodies + b) * kCount;
+        for (std::size_t c = 0; c < kCount; ++c) values[c] = columns[c]->lanes[l];
+      }
+    }
+  }
+}
+
 double RotationNorm(const float* state) {
   double norm = 0.0;
   for (int i = 3; i < 7; ++i) norm += double(state[i]) * state[i];
@@ -453,13 +483,10 @@ std::size_t Batch::UnhealthyWorldCount() const {
 }
 
 void Batch::GetState(std::span<float> out) const {
-  const std::size_t bodies = body_count();
-  impl().CheckSize(out.size(), world_count() * bodies * kStateFloatsPerBody, "GetState");
-  for (std::size_t w = 0; w < world_count(); ++w) {
-    for (std::size_t b = 0; b < bodies; ++b) {
-      impl().ReadState(w, b, out.data() + (w * bodies + b) * kStateFloatsPerBody);
-    }
-  }
+  const Impl& batch = impl();
+  batch.CheckSize(out.size(), batch.world_count_ * batch.plan_.bodies.size() * kStateFloatsPerBody,
+                  "GetState");
+  ReadStateColumns<kStateFloatsPerBody>(batch, 0, out.data());
 }
 
 void Batch::SetState(std::span<const float> in, std::span<const std::uint8_t> world_mask) {
@@ -469,14 +496,13 @@ void Batch::SetState(std::span<const float> in, std::span<const std::uint8_t> wo
 }
 
 void Batch::GetField(StateField field, std::span<float> out) const {
-  const std::size_t bodies = body_count(), size = StateFieldSize(field);
-  impl().CheckSize(out.size(), world_count() * bodies * size, "GetField");
-  float state[kStateFloatsPerBody];
-  for (std::size_t w = 0; w < world_count(); ++w) {
-    for (std::size_t b = 0; b < bodies; ++b) {
-      impl().ReadState(w, b, state);
-      std::copy_n(state + StateFieldOffset(field), size, out.data() + (w * bodies + b) * size);
-    }
+  const Impl& batch = impl();
+  const std::size_t size = StateFieldSize(field);
+  batch.CheckSize(out.size(), batch.world_count_ * batch.plan_.bodies.size() * size, "GetField");
+  if (size == 4) {
+    ReadStateColumns<4>(batch, StateFieldOffset(field), out.data());
+  } else {
+    ReadStateColumns<3>(batch, StateFieldOffset(field), out.data());
   }
 }
 
