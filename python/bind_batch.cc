@@ -84,7 +84,7 @@ void BindStepAndState(py::class_<Batch>& cls) {
            py::gil_scoped_release release;
            batch.Step(copy);
          },
-         py::arg("settings") = StepSettings{},
+         py::arg_v("settings", StepSettings{}, "StepSettings()"),
          "Steps every world by settings.delta_time (the GIL is released meanwhile).")
       .def(
           "get_state",

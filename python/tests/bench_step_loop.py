@@ -1,0 +1,171 @@
+#!/usr/bin/python3
+"""What a Python RL step loop costs over Batch::Step alone.
+
+Timings of the same batch, interleaved, median of the repeats, in ns per
+world-step:
+  step()  batch.step() alone, timed from Python around the call (the call
+          releases the GIL and runs Batch::Step; it adds one pybind11 call,
+          well under a microsecond, to the C++ figure);
+  loop    an RL rollout's loop: write the actions from a numpy array
+          (set_body_forces), step, read the observations into a preallocated
+          array (get_state(out=)), reset the done worlds (reset(mask));
+  +numpy  the same loop with the done flags computed from the observations
+          with numpy (cart off the track or pole past 0.2 rad) instead of
+          drawn beforehand: what a plain numpy environment adds on top.
+The overhead is loop / step() - 1. Actions and done masks are drawn before
+the timing; --reset-rate is the fraction of worlds done per step (default
+4 %, a random policy's: its cartpole episodes last about 25 steps).
+A breakdown (microseconds per call inside the loop) follows.
+
+    /usr/bin/python3 python/tests/bench_step_loop.py            # 4096 worlds
+    /usr/bin/python3 python/tests/bench_step_loop.py --smoke    # seconds (ctest)
+
+Run it with the build tree's package (PYTHONPATH=build/python) or the
+installed one. --max-overhead P exits 1 when an overhead is above P percent.
+"""
+
+import argparse
+import math
+import statistics
+import sys
+import time
+
+import numpy as np
+
+import manyworlds as mw
+
+CART, POLE = mw.reference_scene.CART, mw.reference_scene.POLE
+PHASES = ("set_body_forces", "step", "get_state", "reset")
+
+
+class Rollout:
+    """The loop's inputs, drawn once, and its preallocated outputs."""
+
+    def __init__(self, batch, steps, reset_rate, seed=0):
+        worlds = batch.num_worlds
+        rng = np.random.default_rng(seed)
+        self.forces = np.zeros((steps, worlds, 3), np.float32)
+        self.forces[:, :, 0] = rng.uniform(-10, 10, (steps, worlds))
+        self.done_masks = rng.random((steps, worlds)) < reset_rate
+        self.observations = np.empty((worlds, batch.num_bodies, 13), np.float32)
+        self.scratch = np.empty(worlds, np.float32)
+        self.done = np.empty(worlds, bool)
+        self.tilted = np.empty(worlds, bool)
+        self.max_pole_sine = np.float32(math.sin(0.1))  # |q_z| of a 0.2 rad tilt about Z
+
+    def step_only(self, batch, settings):
+        elapsed = 0
+        for _ in range(len(self.forces)):
+            start = time.perf_counter_ns()
+            batch.step(settings)
+            elapsed += time.perf_counter_ns() - start
+        return elapsed
+
+    def loop(self, batch, settings):
+        obs = self.observations
+        start = time.perf_counter_ns()
+        for forces, done in zip(self.forces, self.done_masks):
+            batch.set_body_forces(CART, forces)
+            batch.step(settings)
+            batch.get_state(out=obs)
+            batch.reset(done)
+        return time.perf_counter_ns() - start
+
+    def loop_with_numpy_done(self, batch, settings):
+        obs, scratch, done, tilted = self.observations, self.scratch, self.done, self.tilted
+        start = time.perf_counter_ns()
+        for forces in self.forces:
+            batch.set_body_forces(CART, forces)
+            batch.step(settings)
+            batch.get_state(out=obs)
+            np.abs(obs[:, CART, 0], out=scratch)
+            np.greater(scratch, 2.4, out=done)
+            np.abs(obs[:, POLE, 5], out=scratch)
+            np.greater(scratch, self.max_pole_sine, out=tilted)
+            np.logical_or(done, tilted, out=done)
+            batch.reset(done)
+        return time.perf_counter_ns() - start
+
+    def breakdown(self, batch, settings):
+        """Microseconds per call of each phase of `loop`, summed over the steps."""
+        totals = dict.fromkeys(PHASES, 0)
+        obs = self.observations
+        for forces, done in zip(self.forces, self.done_masks):
+            t0 = time.perf_counter_ns()
+            batch.set_body_forces(CART, forces)
+            t1 = time.perf_counter_ns()
+            batch.step(settings)
+            t2 = time.perf_counter_ns()
+            batch.get_state(out=obs)
+            t3 = time.perf_counter_ns()
+            batch.reset(done)
+            t4 = time.perf_counter_ns()
+            for phase, ns in zip(PHASES, (t1 - t0, t2 - t1, t3 - t2, t4 - t3)):
+                totals[phase] += ns
+        return {phase: ns / len(self.forces) / 1000 for phase, ns in totals.items()}
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--worlds", type=int, default=4096)
+    parser.add_argument("--steps", type=int, default=200, help="steps per timing")
+    parser.add_argument("--repeats", type=int, default=15)
+    parser.add_argument("--threads", type=int, nargs="+", default=[1, 0],
+                        help="thread counts (0: the default, every core)")
+    parser.add_argument("--reset-rate", type=float, default=0.04,
+                        help="fraction of worlds reset per step in `loop`")
+    parser.add_argument("--smoke", action="store_true", help="a few steps, to check it runs")
+    parser.add_argument("--max-overhead", type=float, default=None,
+                        help="exit 1 when `loop` costs more than this percent over step()")
+    args = parser.parse_args()
+    if args.smoke:
+        args.worlds, args.steps, args.repeats = 256, 5, 2
+
+    scene, settings = mw.make_scene("cartpole"), mw.scene_step_settings("cartpole")
+    configs = []
+    for threads in args.threads:
+        batch = mw.Batch(scene, args.worlds, threads=threads)
+        rollout = Rollout(batch, args.steps, args.reset_rate)
+        configs.append({"batch": batch, "rollout": rollout,
+                        "timings": {"step": [], "loop": [], "numpy": []},
+                        "breakdowns": []})
+
+    world_steps = args.steps * args.worlds
+    for repeat in range(args.repeats):
+        for config in configs:
+            batch, rollout = config["batch"], config["rollout"]
+            timings = [("step", rollout.step_only), ("loop", rollout.loop),
+                       ("numpy", rollout.loop_with_numpy_done)]
+            # Rotate the order, so that drift and cache warmth favour none.
+            shift = repeat % len(timings)
+            for name, timing in timings[shift:] + timings[:shift]:
+                config["timings"][name].append(timing(batch, settings) / world_steps)
+            config["breakdowns"].append(rollout.breakdown(batch, settings))
+
+    print(f"manyworlds {mw.__version__}: cartpole, {args.worlds} worlds, {args.steps} steps "
+          f"x {args.repeats} repeats (median), SIMD target {configs[0]['batch'].simd_target}, "
+          f"{100 * args.reset_rate:g} % of worlds reset per step")
+    print(f"{'threads':>7} {'step() ns/world-step':>21} {'loop':>8} {'overhead':>9} "
+          f"{'+numpy':>8} {'overhead':>9}")
+    worst = -math.inf
+    for config in configs:
+        step_ns, loop_ns, numpy_ns = (statistics.median(config["timings"][name])
+                                      for name in ("step", "loop", "numpy"))
+        overhead = 100 * (loop_ns / step_ns - 1)
+        worst = max(worst, overhead)
+        print(f"{config['batch'].threads:>7} {step_ns:>21.2f} {loop_ns:>8.2f} {overhead:>+8.1f}% "
+              f"{numpy_ns:>8.2f} {100 * (numpy_ns / step_ns - 1):>+8.1f}%")
+    print("microseconds per call inside the loop (median):")
+    for config in configs:
+        parts = ", ".join(
+            f"{phase} {statistics.median(b[phase] for b in config['breakdowns']):.1f}"
+            for phase in PHASES)
+        print(f"  threads {config['batch'].threads}: {parts}")
+    if args.max_overhead is not None and worst > args.max_overhead:
+        print(f"overhead {worst:.1f} % is above {args.max_overhead} %", file=sys.stderr)
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
