@@ -11,6 +11,7 @@
 // The snapshot costs a copy of the batch (bytes_per_world * num_worlds) per
 // call: cheap next to a step, but meant for resets, not every step.
 
+#include <algorithm>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -26,6 +27,9 @@ namespace {
 // restoring the batch if one of them throws.
 template <class SetWorld>
 void ForSelectedWorlds(Batch& batch, std::span<const std::uint8_t> mask, SetWorld set_world) {
+  if (!mask.empty() && std::all_of(mask.begin(), mask.end(), [](auto m) { return m == 0; })) {
+    return;  // no world selected: nothing to write, no snapshot to pay for
+  }
   const BatchSnapshot before = batch.Snapshot();
   try {
     for (std::size_t w = 0; w < batch.world_count(); ++w) {

@@ -214,6 +214,35 @@ def test_nan_actions_flag_their_world_only(cartpole):
     assert_same_bits(cartpole.get_state()[9], initial[9])
 
 
+def test_per_world_parameters_change_only_their_worlds():
+    scene = mw.make_scene("cartpole")
+    batch, clean = mw.Batch(scene, WORLDS), mw.Batch(scene, WORLDS)
+    pole = mw.reference_scene.POLE
+    weightless = np.zeros(WORLDS, bool)
+    weightless[[1, 20, 40]] = True
+    batch.set_gravity_factor(pole, 0.0, mask=weightless)
+    masses = np.full(WORLDS, scene.bodies[pole].mass, np.float32)
+    masses[5] = 0.3  # every other world gets the scene's own mass: the same bits
+    batch.set_mass_properties(pole, masses, scene.bodies[pole].inertia_diagonal)
+    batch.set_damping(CART, 0.5, 0.5, mask=np.zeros(WORLDS, bool))  # no world selected
+    for _ in range(30):
+        batch.step()
+        clean.step()
+    changed = weightless.copy()
+    changed[5] = True
+    state, clean_state = batch.get_state(), clean.get_state()
+    assert_same_bits(state[~changed], clean_state[~changed])
+    for world in np.flatnonzero(changed):
+        assert not np.array_equal(bits(state[world]), bits(clean_state[world])), world
+    # A reset puts the scene's parameters back.
+    batch.reset()
+    clean.reset()
+    for _ in range(30):
+        batch.step()
+        clean.step()
+    assert_same_bits(batch.get_state(), clean.get_state())
+
+
 def test_constraint_errors(cartpole):
     cartpole.step()
     errors = cartpole.max_constraint_errors()
