@@ -26,8 +26,8 @@ std::string TypeNameOf(py::handle value) {
 // `numpy_dtype` is what to convert to (e.g. "np.float32").
 template <class T>
 py::array CheckedArray(py::handle value, const char* name, const Shape& shape,
-                       std::initializer_list<py::dtype> dtypes, const std::string& expected,
-                       const std::string& numpy_dtype) {
+                       std::initializer_list<py::dtype> dtypes, const char* expected,
+                       const char* numpy_dtype) {
   if (!py::isinstance<py::array>(value)) {
     throw py::type_error(std::string(name) + ": expected a numpy array of " + expected + ", got " +
                          TypeNameOf(value) + " (use np.asarray(x, dtype=" + numpy_dtype + "))");
@@ -60,25 +60,30 @@ py::array CheckedArray(py::handle value, const char* name, const Shape& shape,
   return array;
 }
 
-// "float32" for float.
+// Names for messages, constants: the checks run on every call of an RL
+// loop, so nothing is built unless a check fails.
 template <class T>
-std::string DtypeName() {
-  return py::str(py::dtype::of<T>().attr("name"));
-}
+constexpr const char* kDtypeName = nullptr;
+template <>
+constexpr const char* kDtypeName<float> = "float32";
+template <class T>
+constexpr const char* kNumpyDtype = nullptr;
+template <>
+constexpr const char* kNumpyDtype<float> = "np.float32";
 
 }  // namespace
 
 template <class T>
 std::span<const T> ArrayArgument(py::handle value, const char* name, const Shape& shape) {
-  const py::array array = CheckedArray<T>(value, name, shape, {py::dtype::of<T>()}, DtypeName<T>(),
-                                          "np." + DtypeName<T>());
+  const py::array array =
+      CheckedArray<T>(value, name, shape, {py::dtype::of<T>()}, kDtypeName<T>, kNumpyDtype<T>);
   return {static_cast<const T*>(array.data()), static_cast<std::size_t>(array.size())};
 }
 
 template <class T>
 std::span<T> OutputArgument(py::handle value, const char* name, const Shape& shape) {
-  py::array array = CheckedArray<T>(value, name, shape, {py::dtype::of<T>()}, DtypeName<T>(),
-                                    "np." + DtypeName<T>());
+  py::array array =
+      CheckedArray<T>(value, name, shape, {py::dtype::of<T>()}, kDtypeName<T>, kNumpyDtype<T>);
   if (!array.writeable()) {
     throw py::value_error(std::string(name) + ": array is read-only");
   }
@@ -107,14 +112,14 @@ PerWorldFloats::PerWorldFloats(py::handle value, const char* name, std::size_t w
     stride_ = width;
     return;
   }
-  const std::string shape = width == 1
-                                ? "(" + std::to_string(worlds) + ",)"
-                                : "(" + std::to_string(worlds) + ", " + std::to_string(width) + ")";
-  const std::string expected =
-      (width == 1 ? std::string("a number")
-                  : "a sequence of " + std::to_string(width) + " numbers") +
-      " or a numpy array of float32, shape " + shape;
   const auto refuse = [&] {
+    const std::string shape =
+        width == 1 ? "(" + std::to_string(worlds) + ",)"
+                   : "(" + std::to_string(worlds) + ", " + std::to_string(width) + ")";
+    const std::string expected =
+        (width == 1 ? std::string("a number")
+                    : "a sequence of " + std::to_string(width) + " numbers") +
+        " or a numpy array of float32, shape " + shape;
     std::string got = TypeNameOf(value);
     if (py::isinstance<py::sequence>(value) && !py::isinstance<py::str>(value)) {
       got += " of length " + std::to_string(py::len(value));
