@@ -2,7 +2,8 @@
 """What a Python RL step loop costs over Batch::Step alone.
 
 Timings of the same batch, interleaved, median of the repeats, in ns per
-world-step:
+world-step (wall clock; for one thread also by the calling thread's CPU
+time, on which other programs' load has little effect):
   step()  batch.step() alone, timed from Python around the call (the call
           releases the GIL and runs Batch::Step; it adds one pybind11 call,
           well under a microsecond, to the C++ figure);
@@ -54,26 +55,27 @@ class Rollout:
         self.max_pole_sine = np.float32(math.sin(0.1))  # |q_z| of a 0.2 rad tilt about Z
 
     def step_only(self, batch, settings):
-        elapsed = 0
+        wall = cpu = 0
         for _ in range(len(self.forces)):
-            start = time.perf_counter_ns()
+            start, start_cpu = time.perf_counter_ns(), time.thread_time_ns()
             batch.step(settings)
-            elapsed += time.perf_counter_ns() - start
-        return elapsed
+            wall += time.perf_counter_ns() - start
+            cpu += time.thread_time_ns() - start_cpu
+        return wall, cpu
 
     def loop(self, batch, settings):
         obs = self.observations
-        start = time.perf_counter_ns()
+        start, start_cpu = time.perf_counter_ns(), time.thread_time_ns()
         for forces, done in zip(self.forces, self.done_masks):
             batch.set_body_forces(CART, forces)
             batch.step(settings)
             batch.get_state(out=obs)
             batch.reset(done)
-        return time.perf_counter_ns() - start
+        return time.perf_counter_ns() - start, time.thread_time_ns() - start_cpu
 
     def loop_with_numpy_done(self, batch, settings):
         obs, scratch, done, tilted = self.observations, self.scratch, self.done, self.tilted
-        start = time.perf_counter_ns()
+        start, start_cpu = time.perf_counter_ns(), time.thread_time_ns()
         for forces in self.forces:
             batch.set_body_forces(CART, forces)
             batch.step(settings)
@@ -84,7 +86,7 @@ class Rollout:
             np.greater(scratch, self.max_pole_sine, out=tilted)
             np.logical_or(done, tilted, out=done)
             batch.reset(done)
-        return time.perf_counter_ns() - start
+        return time.perf_counter_ns() - start, time.thread_time_ns() - start_cpu
 
     def breakdown(self, batch, settings):
         """Microseconds per call of each phase of `loop`, summed over the steps."""
@@ -103,6 +105,17 @@ class Rollout:
             for phase, ns in zip(PHASES, (t1 - t0, t2 - t1, t3 - t2, t4 - t3)):
                 totals[phase] += ns
         return {phase: ns / len(self.forces) / 1000 for phase, ns in totals.items()}
+
+
+def overheads(timings):
+    """A table row of median step(), loop and +numpy ns/world-step with the
+    overheads over step(); and the loop's overhead in percent."""
+    step_ns, loop_ns, numpy_ns = (statistics.median(timings[name])
+                                  for name in ("step", "loop", "numpy"))
+    overhead = 100 * (loop_ns / step_ns - 1)
+    row = (f"{step_ns:>21.2f} {loop_ns:>8.2f} {overhead:>+8.1f}% "
+           f"{numpy_ns:>8.2f} {100 * (numpy_ns / step_ns - 1):>+8.1f}%")
+    return row, overhead
 
 
 def main():
@@ -127,7 +140,8 @@ def main():
         batch = mw.Batch(scene, args.worlds, threads=threads)
         rollout = Rollout(batch, args.steps, args.reset_rate)
         configs.append({"batch": batch, "rollout": rollout,
-                        "timings": {"step": [], "loop": [], "numpy": []},
+                        "wall": {"step": [], "loop": [], "numpy": []},
+                        "cpu": {"step": [], "loop": [], "numpy": []},
                         "breakdowns": []})
 
     world_steps = args.steps * args.worlds
@@ -139,7 +153,9 @@ def main():
             # Rotate the order, so that drift and cache warmth favour none.
             shift = repeat % len(timings)
             for name, timing in timings[shift:] + timings[:shift]:
-                config["timings"][name].append(timing(batch, settings) / world_steps)
+                wall, cpu = timing(batch, settings)
+                config["wall"][name].append(wall / world_steps)
+                config["cpu"][name].append(cpu / world_steps)
             config["breakdowns"].append(rollout.breakdown(batch, settings))
 
     print(f"manyworlds {mw.__version__}: cartpole, {args.worlds} worlds, {args.steps} steps "
@@ -149,12 +165,15 @@ def main():
           f"{'+numpy':>8} {'overhead':>9}")
     worst = -math.inf
     for config in configs:
-        step_ns, loop_ns, numpy_ns = (statistics.median(config["timings"][name])
-                                      for name in ("step", "loop", "numpy"))
-        overhead = 100 * (loop_ns / step_ns - 1)
+        row, overhead = overheads(config["wall"])
         worst = max(worst, overhead)
-        print(f"{config['batch'].threads:>7} {step_ns:>21.2f} {loop_ns:>8.2f} {overhead:>+8.1f}% "
-              f"{numpy_ns:>8.2f} {100 * (numpy_ns / step_ns - 1):>+8.1f}%")
+        print(f"{config['batch'].threads:>7} {row}")
+    for config in configs:
+        # With one thread every part runs on this thread, so its CPU time is
+        # the work itself, whatever else the machine runs meanwhile.
+        if config["batch"].threads == 1:
+            row, _ = overheads(config["cpu"])
+            print(f"{'1 (CPU)':>7} {row}   <- this thread's CPU time: robust to other load")
     print("microseconds per call inside the loop (median):")
     for config in configs:
         parts = ", ".join(
