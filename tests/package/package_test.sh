@@ -88,10 +88,10 @@ readme_example=$work/readme_example.cc
 awk -v marker="$marker" '
   $0 == marker { found = 1; next }
   found == 1 && /^```cpp[[:space:]]*$/ { found = 2; next }
-  found == 1 && NF { exit 3 }   # something else between marker and fence
+  found == 1 && NF { found = -1; exit }   # something else between marker and fence
   found == 2 && /^```[[:space:]]*$/ { found = 3; exit }
   found == 2 { print }
-  END { if (found != 3) exit (found == 0 ? 1 : 2) }' \
+  END { if (found != 3) exit (found == 0 ? 1 : found == -1 ? 3 : 2) }' \
   "$source_dir/README.md" >"$readme_example" || {
   case $? in
     1) fail "README.md has no line '$marker'" ;;
