@@ -49,8 +49,11 @@ for file in "$libdir/libmanyworlds_batch.a" "$libdir/libmanyworlds_kernels.a" \
             "$libdir/pkgconfig/manyworlds.pc"; do
   [ -s "$prefix/$file" ] || fail "$file not installed"
 done
-# Nothing else: no executables, private headers or test files.
-unexpected=$(cd "$prefix" && find . -type f | sed 's|^\./||' | grep -v -E \
+# Nothing else of the C++ package: no private headers, other libraries or
+# stray CMake files. (Files elsewhere, e.g. a Python module's, are not this
+# test's business.)
+unexpected=$(cd "$prefix" && find . -type f | sed 's|^\./||' |
+  grep -E "^$includedir/|^$libdir/[^/]+$|^$libdir/cmake/|^$libdir/pkgconfig/" | grep -v -E \
   "^$includedir/manyworlds/[a-z_]+\.h$|^$libdir/libmanyworlds_(batch|kernels)\.a$|^$libdir/cmake/manyworlds/manyworlds(Config|ConfigVersion|Targets|Targets-[a-z]+)\.cmake$|^$libdir/pkgconfig/manyworlds\.pc$" || true)
 [ -z "$unexpected" ] || fail "unexpected files installed:
 $unexpected"
