@@ -586,8 +586,9 @@ TEST(BatchTest, ForcesActForOneStepAndMatchNewton) {
 namespace manyworlds {
 namespace {
 
-// The README's usage example, kept compiling and meaningful: the motor turns
-// the pole and the reset world is back at the scene's start.
+// The README's complete example ("Using the library"; ctest package compiles
+// and runs it as written), here with checks: the motor turns the pole and
+// the reset world is back at the scene's start.
 TEST(BatchTest, ReadmeExampleRuns) {
   Scene scene;
   BodySettings ground;  ground.motion_type = MotionType::kStatic;
