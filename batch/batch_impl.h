@@ -4,6 +4,8 @@
 // batch_snapshot.cc: snapshots).
 #pragma once
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
 #include <atomic>
@@ -42,6 +44,23 @@ class Batch::Impl {
   }
   const std::byte* Block(std::size_t block) const {
     return reinterpret_cast<const std::byte*>(storage_.data() + block * arrays_per_block_);
+  }
+
+  // fn(block) for every block, over the batch's threads when there are
+  // enough blocks to share (read-outs that write disjoint per-world slices).
+  template <class Fn>
+  void ForEachBlock(Fn&& fn) const {
+    constexpr std::size_t kBlocksPerTask = 16;
+    if (threads_ == 1 || block_count_ < 2 * kBlocksPerTask) {
+      for (std::size_t block = 0; block < block_count_; ++block) fn(block);
+      return;
+    }
+    arena_.execute([&] {
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, block_count_, kBlocksPerTask),
+                        [&](const tbb::blocked_range<std::size_t>& range) {
+                          for (std::size_t b = range.begin(); b != range.end(); ++b) fn(b);
+                        });
+    });
   }
 
   // Steps every block whose task starts before `stop` is requested.
@@ -165,7 +184,7 @@ class Batch::Impl {
   std::vector<std::size_t> input_arrays_;
   const StepKernels* kernels_;
   int threads_;
-  tbb::task_arena arena_;
+  mutable tbb::task_arena arena_;  // const read-outs run in it too
   std::size_t blocks_per_task_;
   float previous_substep_dt_ = 0.0f;  // Jolt's mPreviousStepDeltaTime (0: cold start)
   std::vector<std::uint8_t> health_ = std::vector<std::uint8_t>(world_count_, 0);

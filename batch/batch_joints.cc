@@ -1,0 +1,88 @@
+// Batch: joint coordinates and motor forces per world (the read-outs are
+// batch/joint_coordinates.h; here only the world loop and the size checks).
+
+#include <algorithm>
+#include <ranges>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "batch/batch_impl.h"
+#include "batch/joint_coordinates.h"
+#include "manyworlds/batch.h"
+
+namespace manyworlds {
+namespace {
+
+// The real worlds of a block (the last block may hold padding lanes).
+auto WorldsOf(const Batch::Impl& batch, std::size_t block) {
+  return std::views::iota(block * kLaneWidth,
+                          std::min((block + 1) * kLaneWidth, batch.world_count_));
+}
+
+}  // namespace
+
+std::size_t Batch::JointCoordinateCount(std::size_t constraint) const {
+  return manyworlds::JointCoordinateCount(impl().Constraint(constraint));
+}
+
+std::vector<std::string> Batch::JointCoordinateNames(std::size_t constraint) const {
+  return manyworlds::JointCoordinateNames(impl().Constraint(constraint));
+}
+
+void Batch::GetJointCoordinates(std::size_t constraint, std::span<float> out) const {
+  const Impl& batch = impl();
+  const std::size_t count = JointCoordinateCount(constraint);
+  batch.CheckSize(out.size(), batch.world_count_ * count, "GetJointCoordinates");
+  batch.ForEachBlock([&](std::size_t block) {
+    for (std::size_t world : WorldsOf(batch, block)) {
+      JointCoordinatesOfLane(batch.plan_, batch.Block(block), Impl::Lane(world), constraint,
+                             out.data() + world * count);
+    }
+  });
+}
+
+std::size_t Batch::JointCoordinatesPerWorld() const {
+  std::size_t total = 0;
+  for (std::size_t c = 0; c < constraint_count(); ++c) total += JointCoordinateCount(c);
+  return total;
+}
+
+void Batch::GetJointCoordinates(std::span<float> out) const {
+  const Impl& batch = impl();
+  const std::size_t per_world = JointCoordinatesPerWorld();
+  batch.CheckSize(out.size(), batch.world_count_ * per_world, "GetJointCoordinates");
+  // Only the constraints that have coordinates, with their offsets in a world's slice.
+  std::vector<std::pair<std::size_t, std::size_t>> read;
+  for (std::size_t c = 0, offset = 0; c < batch.plan_.constraints.size(); ++c) {
+    const std::size_t count = manyworlds::JointCoordinateCount(batch.plan_.constraints[c]);
+    if (count > 0) read.emplace_back(c, offset);
+    offset += count;
+  }
+  batch.ForEachBlock([&](std::size_t block) {
+    for (std::size_t world : WorldsOf(batch, block)) {
+      for (const auto& [c, offset] : read) {
+        JointCoordinatesOfLane(batch.plan_, batch.Block(block), Impl::Lane(world), c,
+                               out.data() + world * per_world + offset);
+      }
+    }
+  });
+}
+
+std::size_t Batch::MotorForceCount(std::size_t constraint) const {
+  return manyworlds::MotorForceCount(impl().Constraint(constraint));
+}
+
+void Batch::GetMotorForces(std::size_t constraint, std::span<float> out) const {
+  const Impl& batch = impl();
+  const std::size_t count = MotorForceCount(constraint);
+  batch.CheckSize(out.size(), batch.world_count_ * count, "GetMotorForces");
+  batch.ForEachBlock([&](std::size_t block) {
+    for (std::size_t world : WorldsOf(batch, block)) {
+      MotorForcesOfLane(batch.plan_, batch.Block(block), Impl::Lane(world), constraint,
+                        batch.previous_substep_dt_, out.data() + world * count);
+    }
+  });
+}
+
+}  // namespace manyworlds
