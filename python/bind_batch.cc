@@ -130,6 +130,69 @@ void BindStepAndState(py::class_<Batch>& cls) {
           py::arg("field"), py::arg("values"));
 }
 
+void BindJointCoordinates(py::class_<Batch>& cls) {
+  cls.def(
+         "joint_coordinate_count",
+         [](const Batch& batch, std::int64_t constraint) {
+           return batch.JointCoordinateCount(
+               CheckedIndex(constraint, batch.constraint_count(), "constraint"));
+         },
+         py::arg("constraint"), "Coordinates per world of a constraint (0 for some types).")
+      .def(
+          "joint_coordinate_names",
+          [](const Batch& batch, std::int64_t constraint) {
+            return batch.JointCoordinateNames(
+                CheckedIndex(constraint, batch.constraint_count(), "constraint"));
+          },
+          py::arg("constraint"),
+          "Names of a constraint's coordinates, e.g. ['angle', 'unwrapped_angle', "
+          "'angular_velocity'] for a hinge.")
+      .def_property_readonly("joint_coordinates_per_world", &Batch::JointCoordinatesPerWorld,
+                             "Coordinates of every constraint of a world, together.")
+      .def(
+          "get_joint_coordinates",
+          [](const Batch& batch, std::optional<std::int64_t> constraint, py::object out) {
+            if (!constraint) {
+              const Shape shape{Worlds(batch),
+                                static_cast<py::ssize_t>(batch.JointCoordinatesPerWorld())};
+              py::array result = OutputArray(out, shape);
+              batch.GetJointCoordinates(OutputArgument<float>(result, "out", shape));
+              return result;
+            }
+            const std::size_t c = CheckedIndex(*constraint, batch.constraint_count(), "constraint");
+            const Shape shape{Worlds(batch),
+                              static_cast<py::ssize_t>(batch.JointCoordinateCount(c))};
+            py::array result = OutputArray(out, shape);
+            batch.GetJointCoordinates(c, OutputArgument<float>(result, "out", shape));
+            return result;
+          },
+          py::arg("constraint") = py::none(), py::arg("out") = py::none(),
+          "Joint coordinates from the bodies as they are: float32 [world, "
+          "joint_coordinate_count(constraint)] in the order of joint_coordinate_names, or "
+          "with constraint None every constraint's, in scene order: [world, "
+          "joint_coordinates_per_world]. With out=, fills that array.")
+      .def(
+          "motor_force_count",
+          [](const Batch& batch, std::int64_t constraint) {
+            return batch.MotorForceCount(
+                CheckedIndex(constraint, batch.constraint_count(), "constraint"));
+          },
+          py::arg("constraint"),
+          "1 for a hinge, slider or path drive, 3 for swing-twist, 6 for six-DOF, else 0.")
+      .def(
+          "get_motor_forces",
+          [](const Batch& batch, std::int64_t constraint, py::object out) {
+            const std::size_t c = CheckedIndex(constraint, batch.constraint_count(), "constraint");
+            const Shape shape{Worlds(batch), static_cast<py::ssize_t>(batch.MotorForceCount(c))};
+            py::array result = OutputArray(out, shape);
+            batch.GetMotorForces(c, OutputArgument<float>(result, "out", shape));
+            return result;
+          },
+          py::arg("constraint"), py::arg("out") = py::none(),
+          "The force (N) or torque (N m) of each motor or friction row in the last substep "
+          "of the last step: float32 [world, motor_force_count(constraint)].");
+}
+
 // A target of three or four floats per world, written through the per-world
 // setter `set` (SetTargetOrientation etc.; the C++ API has no array form).
 template <std::size_t N, class Target>
@@ -390,6 +453,7 @@ void BindBatch(py::module_& m) {
                         "raises RuntimeError).");
   BindConstruction(cls);
   BindStepAndState(cls);
+  BindJointCoordinates(cls);
   BindActions(cls);
   BindResetsAndSnapshots(cls);
   BindReports(cls);

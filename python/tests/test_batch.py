@@ -139,6 +139,38 @@ def test_motor_targets_drive_the_hinge():
     np.testing.assert_allclose(2 * np.arctan2(rotation[:, 2], rotation[:, 3]), angles, atol=1e-2)
 
 
+def test_joint_coordinates(cartpole):
+    rail, hinge = mw.reference_scene.RAIL, mw.reference_scene.POLE_HINGE
+    names = cartpole.joint_coordinate_names(hinge)
+    assert names[:3] == ["angle", "unwrapped_angle", "angular_velocity"]
+    assert cartpole.joint_coordinate_count(hinge) == len(names)
+    angles = cartpole.get_joint_coordinates(hinge)
+    assert angles.shape == (WORLDS, len(names)) and angles.dtype == np.float32
+    np.testing.assert_allclose(angles[:, 0], 0.1, atol=1e-6)  # the pole starts 0.1 rad off
+    for _ in range(20):
+        cartpole.step()
+    # The hinge angle is the pole's rotation about Z (the cart does not turn).
+    rotation = cartpole.get_field(mw.StateField.ROTATION)[:, mw.reference_scene.POLE]
+    angle = 2 * np.arctan2(rotation[:, 2], rotation[:, 3])
+    np.testing.assert_allclose(cartpole.get_joint_coordinates(hinge)[:, 0], angle, atol=1e-5)
+    # Every constraint's coordinates together, in scene order; out= fills an array.
+    every = np.empty((WORLDS, cartpole.joint_coordinates_per_world), np.float32)
+    assert cartpole.get_joint_coordinates(out=every) is every
+    parts = [cartpole.get_joint_coordinates(c) for c in (rail, hinge)]
+    assert_same_bits(every, np.concatenate(parts, axis=1))
+
+
+def test_motor_forces_saturate_at_their_limit():
+    batch = mw.Batch(motor_hinge_scene(mw.MotorState.VELOCITY), WORLDS)
+    assert batch.motor_force_count(0) == 1
+    targets = np.where(np.arange(WORLDS) % 2 == 0, 50.0, -50.0).astype(np.float32)
+    batch.set_target_velocities(0, targets)  # far beyond what 5 N m reach in a step
+    batch.step(mw.StepSettings(gravity=(0, 0, 0)))
+    torques = batch.get_motor_forces(0)
+    assert torques.shape == (WORLDS, 1)
+    np.testing.assert_allclose(torques[:, 0], np.sign(targets) * 5.0, rtol=1e-5)
+
+
 def test_reset_changes_only_masked_worlds(cartpole):
     initial = cartpole.get_state()
     rng = np.random.default_rng(4)

@@ -52,6 +52,8 @@ ARRAY_ARGUMENTS = [
     ("state", S, lambda b, a: b.reset_to(None, a)),
     ("out", S, lambda b, a: b.get_state(out=a)),
     ("out", (WORLDS, 3, 3), lambda b, a: b.get_field(mw.StateField.POSITION, out=a)),
+    ("out", (WORLDS, 3), lambda b, a: b.get_joint_coordinates(POLE_HINGE, out=a)),
+    ("out", (WORLDS, 5), lambda b, a: b.get_joint_coordinates(out=a)),  # rail 2 + hinge 3
     ("mass", (WORLDS,), lambda b, a: b.set_mass_properties(CART, a, (0.1, 0.1, 0.1))),
     ("inertia", (WORLDS, 3), lambda b, a: b.set_mass_properties(CART, 1.0, a)),
     ("factor", (WORLDS,), lambda b, a: b.set_gravity_factor(CART, a)),
