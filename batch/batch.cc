@@ -272,17 +272,19 @@ void Batch::Impl::ReadState(std::size_t world, std::size_t body, float* out) con
 namespace {
 
 // Columns [first, first + kCount) of every body's 13-float state row (in
-// StateField order), into out[world][body][kCount]: block by block and body
-// by body, each of the body's lane arrays located once per block, and the
-// count a constant so that the copy of a row unrolls. Reading observations
-// every step is part of an RL loop's cost next to Step
-// (python/tests/bench_step_loop.py): world by world and body by body, a
-// GetState of 4096 cartpoles took a sixth of their Step (110 us of 680),
-// this way 50 us; GetField of positions 140 us, now 17.
+// StateField order), into out[world][body][kCount]: block by block (over the
+// batch's threads, as the joint coordinates) and body by body, each of the
+// body's lane arrays located once per block, and the count a constant so
+// that the copy of a row unrolls. Reading observations every step is part of
+// an RL loop's cost next to Step (python/tests/bench_step_loop.py): world by
+// world and body by body, a GetState of 4096 cartpoles took a sixth of their
+// Step (110 us of 680), this way 50 us on one thread; GetField of positions
+// 140 us, now 17.
 template <std::size_t kCount>
 void ReadStateColumns(const Batch::Impl& batch, std::size_t first, float* out) {
   const std::size_t worlds = batch.world_count_, bodies = batch.plan_.bodies.size();
-  for (std::size_t block_first = 0; block_first < worlds; block_first += kLaneWidth) {
+  batch.ForEachBlock([&](std::size_t block) {
+    const std::size_t block_first = block * kLaneWidth;
     const std::size_t lanes = std::min(kLaneWidth, worlds - block_first);
     for (std::size_t b = 0; b < bodies; ++b) {
       const BodyLanes& body = batch.In<BodyLanes>(block_first, batch.plan_.bodies[b].offset);
@@ -298,7 +300,7 @@ void ReadStateColumns(const Batch::Impl& batch, std::size_t first, float* out) {
         for (std::size_t c = 0; c < kCount; ++c) values[c] = columns[c]->lanes[l];
       }
     }
-  }
+  });
 }
 
 double RotationNorm(const float* state) {
@@ -387,13 +389,20 @@ void Batch::Impl::ResetWorld(std::size_t world) {
   for (std::size_t i = 0; i < arrays_per_block_; ++i) block[i][l] = initial_[i][l];
 }
 
+// Over the batch's threads, block by block (a world's lanes, health and
+// pending input are its block's alone): an RL loop resets done worlds every
+// step, each rewriting its lane of every array of its block, and with two
+// threads half of those blocks sit in the other core's cache after Step.
 void Batch::Impl::ResetWorlds(std::span<const std::uint8_t> mask) {
-  for (std::size_t w = 0; w < world_count_; ++w) {
-    if (mask[w] == 0) continue;
-    ResetWorld(w);
-    health_[w] = 0;
-    pending_input_[w] = 0;
-  }
+  ForEachBlock([&](std::size_t block) {
+    const std::size_t end = std::min((block + 1) * kLaneWidth, world_count_);
+    for (std::size_t w = block * kLaneWidth; w < end; ++w) {
+      if (mask[w] == 0) continue;
+      ResetWorld(w);
+      health_[w] = 0;
+      pending_input_[w] = 0;
+    }
+  });
 }
 
 // Swing-twist and six-DOF drives have one motor per axis; the single-value
