@@ -124,10 +124,11 @@ void Batch::Restore(const BatchSnapshot& snapshot, std::span<const std::uint8_t>
   }
   if (!world_mask.empty()) batch.CheckSize(world_mask.size(), batch.world_count_, "Restore mask");
 
-  const std::byte* in = snapshot.data_.data() + sizeof(Header);
-  const auto* blocks = reinterpret_cast<const LaneArray*>(in);
+  // The blocks follow the 40-byte header, so they are not LaneArray-aligned
+  // in the snapshot's bytes: copied with memcpy, never read as LaneArrays.
+  const std::byte* blocks = snapshot.data_.data() + sizeof(Header);
   const std::uint8_t* health = reinterpret_cast<const std::uint8_t*>(
-      in + batch.storage_.size() * sizeof(LaneArray));
+      blocks + batch.storage_.size() * sizeof(LaneArray));
   const std::uint8_t* pending = health + batch.world_count_;
   if (world_mask.empty()) {
     std::memcpy(batch.storage_.data(), blocks, batch.storage_.size() * sizeof(LaneArray));
@@ -141,7 +142,8 @@ void Batch::Restore(const BatchSnapshot& snapshot, std::span<const std::uint8_t>
     const std::size_t first = (world / kLaneWidth) * batch.arrays_per_block_;
     const std::size_t l = Impl::Lane(world);
     for (std::size_t i = first; i < first + batch.arrays_per_block_; ++i) {
-      batch.storage_[i][l] = blocks[i][l];
+      std::memcpy(&batch.storage_[i][l], blocks + i * sizeof(LaneArray) + l * sizeof(float),
+                  sizeof(float));
     }
     batch.health_[world] = health[world];
     batch.pending_input_[world] = pending[world];

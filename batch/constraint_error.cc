@@ -8,41 +8,14 @@
 #include <cmath>
 
 #include "batch/constraint_lanes.h"
+#include "batch/lane_readout.h"
 #include "kernels/body_lanes.h"
 #include "batch/path_frame.h"
 
 namespace manyworlds {
 namespace {
 
-using Vector = Eigen::Vector3d;
-using Rotation = Eigen::Quaterniond;
-constexpr double kTwoPi = 6.283185307179586;
-
-// Read-only view of one lane of a block.
-struct LaneReader {
-  const std::byte* block;
-  std::size_t lane;
-
-  template <class Lanes>
-  const Lanes& at(std::size_t offset) const {
-    return *reinterpret_cast<const Lanes*>(block + offset);
-  }
-  double operator()(const LaneArray& a) const { return a[lane]; }
-  Vector operator()(const Vec3Lanes& v) const { return Vector(v.x[lane], v.y[lane], v.z[lane]); }
-  Rotation operator()(const QuatLanes& q) const {
-    return Rotation(q.w[lane], q.x[lane], q.y[lane], q.z[lane]);
-  }
-};
-
-struct Pose {
-  Vector x;
-  Rotation q;
-};
-
-Pose BodyPose(const StepPlan& plan, const LaneReader& read, std::size_t body) {
-  const BodyLanes& b = read.at<BodyLanes>(plan.bodies[body].offset);
-  return Pose{read(b.position), read(b.rotation).normalized()};
-}
+using namespace readout;
 
 // Angle of the rotation q (in [0, pi]).
 double RotationAngle(const Rotation& q) {
@@ -62,45 +35,15 @@ double LimitViolation(double value, double min, double max) {
   return std::max({0.0, min - value, value - max});
 }
 
-double Fold(double angle) {
-  double x = std::fmod(angle, kTwoPi);
-  if (x > M_PI) x -= kTwoPi;
-  if (x < -M_PI) x += kTwoPi;
-  return x;
-}
-
-double HingeAngle(const Pose& b1, const Pose& b2, const LaneReader& read,
-                  const HingeConstraintLanes& s) {
-  const Rotation diff = b2.q * read(s.inv_initial_orientation) * b1.q.conjugate();
-  const Vector a1 = b1.q * read(s.hinge_axis1_local);
-  if (diff.w() == 0.0) return M_PI;
-  return 2.0 * std::atan(diff.vec().dot(a1) / diff.w());
-}
-
-double SliderPosition(const Pose& b1, const Pose& b2, const LaneReader& read,
-                      const SliderConstraintLanes& s, Vector* separation = nullptr,
-                      Vector* axis = nullptr) {
-  const Vector u = (b2.x + b2.q * read(s.anchors.r2_local)) - (b1.x + b1.q * read(s.anchors.r1_local));
-  const Vector slider = b1.q * read(s.slider_axis1_local);
-  if (separation != nullptr) *separation = u;
-  if (axis != nullptr) *axis = slider;
-  return u.dot(slider);
-}
-
 // How far the relative rotation q of a swing-twist joint (body 2's frame in
 // body 1's) lies outside its limits, in rad: twist about X, and swing per axis
 // (pyramid, or a locked or free axis) or radially beyond the ellipse (cone).
-double SwingTwistViolation(Rotation q, const SwingTwistConfig& config, const LaneReader& read,
+double SwingTwistViolation(const Rotation& q, const SwingTwistConfig& config,
+                           const LaneReader& read,
                            const SwingTwistLimitLanes& limits) {
-  if (q.w() < 0.0) q.coeffs() = -q.coeffs();
-  const double s = std::sqrt(q.w() * q.w() + q.x() * q.x());
-  double twist = 0.0, swing_y = q.y(), swing_z = q.z(), swing_w = q.w();
-  if (s > 0.0) {
-    twist = 2.0 * std::atan2(q.x(), q.w());
-    swing_y = (q.w() * q.y() - q.x() * q.z()) / s;
-    swing_z = (q.w() * q.z() + q.x() * q.y()) / s;
-    swing_w = s;
-  }
+  const SwingTwist decomposed = DecomposeSwingTwist(q);
+  const double twist = decomposed.twist, swing_y = decomposed.swing_y;
+  const double swing_z = decomposed.swing_z, swing_w = decomposed.swing_w;
   const auto axis_violation = [&](AxisLimitKind kind, double angle, const AxisLimitLanes& l) {
     if (kind == AxisLimitKind::kFree) return 0.0;
     if (kind == AxisLimitKind::kLocked) return std::abs(angle);
@@ -129,22 +72,6 @@ double SwingTwistViolation(Rotation q, const SwingTwistConfig& config, const Lan
                                 std::asin(std::min(1.0, allowed))));
 }
 
-
-// Velocity of a body's point at world lever arm r (from the COM); a static
-// body has none, whatever its lanes hold.
-struct Motion {
-  Vector v, w;
-};
-
-Motion BodyMotion(const StepPlan& plan, const LaneReader& read, std::size_t body) {
-  if (plan.bodies[body].motion == MotionType::kStatic) {
-    return Motion{Vector::Zero(), Vector::Zero()};
-  }
-  const BodyLanes& b = read.at<BodyLanes>(plan.bodies[body].offset);
-  return Motion{read(b.linear_velocity), read(b.angular_velocity)};
-}
-
-Vector PointVelocity(const Motion& m, const Vector& r) { return m.v + m.w.cross(r); }
 
 // |v_p2 - v_p1| at the anchors of a point part.
 double AnchorVelocityError(const Pose& b1, const Motion& m1, const Pose& b2, const Motion& m2,

@@ -74,6 +74,20 @@ HWY_INLINE void HingeAxesAndAngle(const ConstraintBlock& c, bool with_angle) {
   });
 }
 
+// Whole turns of theta: a jump of more than pi since the last setup is a wrap
+// through +-pi (the hinge turned less than pi, the other way round).
+HWY_INLINE void HingeCountTurns(HingeConstraintLanes& s) {
+  ForEachChunk([&](std::size_t offset) {
+    const LaneVec theta = Load(s.angle, offset);
+    const LaneVec jump = hn::Sub(theta, Load(s.turn_reference_angle, offset));
+    const LaneVec pi = Splat(kPiHigh);
+    const LaneVec up = hn::IfThenElseZero(hn::Lt(jump, hn::Neg(pi)), Splat(1.0f));
+    const LaneVec down = hn::IfThenElseZero(hn::Gt(jump, pi), Splat(1.0f));
+    Store(hn::Add(Load(s.turns, offset), hn::Sub(up, down)), s.turns, offset);
+    Store(theta, s.turn_reference_angle, offset);
+  });
+}
+
 // The limit row from theta (setup and position phase); deactivates the lanes
 // whose angle is inside the limits.
 inline void HingeLimitProperties(const ConstraintBlock& c, const StepScalars& step) {
@@ -117,7 +131,9 @@ inline void HingeMotorProperties(const ConstraintBlock& c, const StepScalars& st
 
 inline void HingeConstraintSetup(const ConstraintBlock& c, const StepScalars& step) {
   auto& s = c.Main<HingeConstraintLanes>();
-  HingeAxesAndAngle(c, c.plan.has_limits() || c.plan.has_motor());
+  // The angle every setup, also without limits or motor: it counts turns.
+  HingeAxesAndAngle(c, true);
+  HingeCountTurns(s);
   PointCalculateProperties(c.bodies, s.anchors, s.point);
   HingeRotationCalculateProperties(c.bodies, s.rotation_geometry, s.rotation);
   if (c.plan.has_limits()) HingeLimitProperties(c, step);

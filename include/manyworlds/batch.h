@@ -175,6 +175,26 @@ class Batch {
   // present, only masked worlds read).
   void ResetTo(std::span<const std::uint8_t> world_mask, std::span<const float> state);
 
+  // ---- joint coordinates (observations), from the bodies as they are now:
+  // per constraint, [world][JointCoordinateCount(c)], in the order of
+  // JointCoordinateNames(c): hinge angle, unwrapped_angle (continuous over
+  // turns) and angular_velocity; slider position and velocity; distance;
+  // swing-twist and six-DOF angles, translations and rates; path fraction
+  // (batch/joint_coordinates.h lists every type). The all-constraints form
+  // writes [world][JointCoordinatesPerWorld()], constraints in scene order.
+  std::size_t JointCoordinateCount(std::size_t constraint) const;
+  std::vector<std::string> JointCoordinateNames(std::size_t constraint) const;
+  void GetJointCoordinates(std::size_t constraint, std::span<float> out) const;
+  std::size_t JointCoordinatesPerWorld() const;
+  void GetJointCoordinates(std::span<float> out) const;
+  // The force (N) or torque (N m) each motor or friction row of a constraint
+  // applied in the last substep of the last Step, [world][MotorForceCount(c)]:
+  // 1 for a hinge, slider or path drive, 3 for swing-twist rotation drives
+  // (twist, swing_y, swing_z), 6 for six-DOF (X, Y, Z, then rotations); 0
+  // where an axis has none. Energy a motor used: torque * angular velocity * dt.
+  std::size_t MotorForceCount(std::size_t constraint) const;
+  void GetMotorForces(std::size_t constraint, std::span<float> out) const;
+
   // ---- exact checkpoints (tree search, resets to saved states, replay)
   BatchSnapshot Snapshot() const;
   // Every world (empty mask), or only the worlds with mask[world] != 0, back

@@ -3,6 +3,7 @@
 // fallback) and picks the best one the CPU supports at run time.
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
