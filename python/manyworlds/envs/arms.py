@@ -7,7 +7,7 @@ import numpy as np
 
 from .. import _core
 from . import _compat
-from .control import _actions, _body, _box, _hinge, _static, _torque_about_hinges
+from .control import _actions, _body, _box, _hinge, _static
 from .vector import ManyWorldsVectorEnv, planar_states, rotate
 
 
@@ -40,7 +40,8 @@ class ReacherEnv(ManyWorldsVectorEnv):
     def __init__(self, num_envs, **options):
         self.step_settings = _core.StepSettings(delta_time=0.02, substeps=2)
         super().__init__(num_envs, **options)
-        self._torques = np.zeros((num_envs, 3, 3), np.float32)
+        self._upper_torque = np.zeros((num_envs, 3), np.float32)
+        self._lower_torque = np.zeros((num_envs, 3), np.float32)
         self.target = np.zeros((num_envs, 2), np.float32)
 
     def _make_scene(self):
@@ -93,10 +94,12 @@ class ReacherEnv(ManyWorldsVectorEnv):
         q = self._joints
         shoulder = self.GEAR * actions[:, 0] - self.DAMPING * q[:, 2]
         elbow = self.GEAR * actions[:, 1] - self.DAMPING * q[:, 5]
-        self._torques[:] = 0.0
-        _torque_about_hinges(self._torques, self.UPPER, shoulder - elbow)
-        _torque_about_hinges(self._torques, self.LOWER, elbow)
-        self.batch.set_torques(self._torques)
+        # One [W, 3] write per link (the whole-batch set_torques form checks
+        # every body of every world and costs more).
+        self._upper_torque[:, 2] = -(shoulder - elbow)  # about the hinges' -Z axis
+        self._lower_torque[:, 2] = -elbow
+        self.batch.set_body_torques(self.UPPER, self._upper_torque)
+        self.batch.set_body_torques(self.LOWER, self._lower_torque)
 
     def fingertip(self):
         """[W, 2] fingertip position (m) from the joint angles."""

@@ -41,11 +41,6 @@ def _hinge(name, body1, body2, point):
                                          hinge_axis2=_MINUS_Z, normal_axis1=_X, normal_axis2=_X)
 
 
-def _torque_about_hinges(out, body, torque):
-    """Adds `torque` [W] (N m, about the hinges' -Z axis) to out[:, body]."""
-    out[:, body, 2] -= torque
-
-
 def _box(size):
     return _compat.make_box(-np.inf, np.inf, (size,), np.float32)
 
@@ -173,7 +168,7 @@ class PendulumSwingupEnv(ManyWorldsVectorEnv):
     def __init__(self, num_envs, **options):
         self.step_settings = _core.StepSettings(delta_time=0.02, substeps=1)
         super().__init__(num_envs, **options)
-        self._torques = np.zeros((num_envs, 2, 3), np.float32)
+        self._torque = np.zeros((num_envs, 3), np.float32)
 
     def _make_scene(self):
         scene = _core.Scene()
@@ -201,9 +196,8 @@ class PendulumSwingupEnv(ManyWorldsVectorEnv):
 
     def _apply_actions(self, actions):
         torque = actions[:, 0] - self.DAMPING * self._joints[:, 2]
-        self._torques[:] = 0.0
-        _torque_about_hinges(self._torques, self.POLE, torque)
-        self.batch.set_body_torques(self.POLE, np.ascontiguousarray(self._torques[:, self.POLE]))
+        self._torque[:, 2] = -torque  # about the hinge's -Z axis
+        self.batch.set_body_torques(self.POLE, self._torque)
 
     def _observe(self):
         q = self._joints
@@ -247,7 +241,8 @@ class AcrobotSwingupEnv(ManyWorldsVectorEnv):
     def __init__(self, num_envs, **options):
         self.step_settings = _core.StepSettings(delta_time=0.01, substeps=1)
         super().__init__(num_envs, **options)
-        self._torques = np.zeros((num_envs, 3, 3), np.float32)
+        self._upper_torque = np.zeros((num_envs, 3), np.float32)
+        self._lower_torque = np.zeros((num_envs, 3), np.float32)
 
     def _make_scene(self):
         scene = _core.Scene()
@@ -287,10 +282,12 @@ class AcrobotSwingupEnv(ManyWorldsVectorEnv):
         q = self._joints
         shoulder = -self.DAMPING * q[:, 2]
         elbow = self.GEAR * actions[:, 0] - self.DAMPING * q[:, 5]
-        self._torques[:] = 0.0
-        _torque_about_hinges(self._torques, self.UPPER, shoulder - elbow)
-        _torque_about_hinges(self._torques, self.LOWER, elbow)
-        self.batch.set_torques(self._torques)
+        # One [W, 3] write per link (the whole-batch set_torques form checks
+        # every body of every world and costs more).
+        self._upper_torque[:, 2] = -(shoulder - elbow)  # about the hinges' -Z axis
+        self._lower_torque[:, 2] = -elbow
+        self.batch.set_body_torques(self.UPPER, self._upper_torque)
+        self.batch.set_body_torques(self.LOWER, self._lower_torque)
 
     def _observe(self):
         q = self._joints
