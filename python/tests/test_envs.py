@@ -11,7 +11,6 @@ import math
 import numpy as np
 import pytest
 
-import manyworlds as mw
 import manyworlds.envs as envs
 from manyworlds.envs.vector import planar_states
 

@@ -16,12 +16,17 @@ are gymnasium.vector.VectorEnv subclasses with gymnasium.spaces; without it
 (Debian has no package), small stand-ins with the same names (_compat.py).
 """
 
-from ._compat import HAVE_GYMNASIUM, AutoresetMode, Box, Discrete, MultiDiscrete  # noqa: F401
+from ._compat import HAVE_GYMNASIUM, AutoresetMode, Box, Discrete, MultiDiscrete
 from .arms import RagdollPoseEnv, ReacherEnv
-from .control import (AcrobotSwingupEnv, CartpoleEnv, PendulumSwingupEnv,  # noqa: F401
-                      cartpole_reward)
-from .rewards import tolerance  # noqa: F401
-from .vector import RANDOMIZATION_OPTIONS, ManyWorldsVectorEnv  # noqa: F401
+from .control import AcrobotSwingupEnv, CartpoleEnv, PendulumSwingupEnv, cartpole_reward
+from .rewards import tolerance
+from .vector import RANDOMIZATION_OPTIONS, ManyWorldsVectorEnv
+
+__all__ = [
+    "make", "ids", "AutoresetMode", "HAVE_GYMNASIUM", "Box", "Discrete", "MultiDiscrete",
+    "ManyWorldsVectorEnv", "CartpoleEnv", "PendulumSwingupEnv", "AcrobotSwingupEnv",
+    "ReacherEnv", "RagdollPoseEnv", "tolerance", "cartpole_reward", "RANDOMIZATION_OPTIONS",
+]
 
 # id -> (class, fixed keyword arguments)
 _REGISTRY = {

@@ -1,12 +1,9 @@
 """A planar reacher (Gymnasium's Reacher-v5 task) and the ragdoll holding a
 target pose with its motors."""
 
-import math
-
 import numpy as np
 
 from .. import _core
-from . import _compat
 from .control import _actions, _body, _box, _hinge, _static
 from .vector import ManyWorldsVectorEnv, planar_states, rotate
 
