@@ -360,7 +360,8 @@ def test_pendulum_acrobot_reacher_rewards():
     obs, reward, *_ = acrobot.step(np.zeros((N, 1), np.float32))
     np.testing.assert_allclose(
         reward, dm_tolerance(acrobot.tip_to_target(), bounds=(0, 0.2), margin=1))
-    th1, th12 = np.arctan2(obs[:, 2], obs[:, 0]), np.arctan2(obs[:, 3], obs[:, 1])
+    # dm_control's order: sines (xz) of both links, then cosines (zz).
+    th1, th12 = np.arctan2(obs[:, 0], obs[:, 2]), np.arctan2(obs[:, 1], obs[:, 3])
     tip = np.stack([np.sin(th1) + np.sin(th12), 2 + np.cos(th1) + np.cos(th12)], 1)
     np.testing.assert_allclose(np.hypot(tip[:, 0], tip[:, 1] - 4), acrobot.tip_to_target(),
                                atol=1e-5)

@@ -222,8 +222,9 @@ class AcrobotSwingupEnv(ManyWorldsVectorEnv):
     from a fixed shoulder 2 m up; action u in [-1, 1] is an elbow torque 2 u
     N m (gear 2); joint damping 0.05 N m s at both joints (explicit torques).
     Step 0.01 s, 1000 steps (10 s). Starts at rest with both angles uniform
-    in [-pi, pi). Observation [cos th1, cos th12, sin th1, sin th12, th1 dot,
-    th2 dot] (dm_control's xx and xz of each link, then qvel); reward
+    in [-pi, pi). Observation [sin th1, sin th12, cos th1, cos th12, th1 dot,
+    th2 dot] (dm_control's orientations(): xz then zz of both links, then
+    qvel); reward
     tolerance(|tip - target|, bounds=(0, 0.2), margin=1) with the target
     4 m up (dm_control's dense swingup).
     """
@@ -293,8 +294,10 @@ class AcrobotSwingupEnv(ManyWorldsVectorEnv):
         q = self._joints
         th1, th12 = q[:, 0], q[:, 0] + q[:, 3]
         obs = np.empty((self.num_envs, 6), np.float32)
-        obs[:, 0], obs[:, 1] = np.cos(th1), np.cos(th12)
-        obs[:, 2], obs[:, 3] = np.sin(th1), np.sin(th12)
+        # dm_control's orientations(): horizontal (xmat xz = sin) of both
+        # links, then vertical (zz = cos).
+        obs[:, 0], obs[:, 1] = np.sin(th1), np.sin(th12)
+        obs[:, 2], obs[:, 3] = np.cos(th1), np.cos(th12)
         obs[:, 4], obs[:, 5] = q[:, 2], q[:, 5]
         return obs
 
