@@ -437,3 +437,75 @@ def test_fallback_spaces():
     modes = {m.name: m.value for m in envs.AutoresetMode}
     assert modes == {"NEXT_STEP": "NextStep", "SAME_STEP": "SameStep", "DISABLED": "Disabled"}
     assert envs.HAVE_GYMNASIUM is False  # what these tests cover: the fallback path
+
+
+# ---- the gymnasium path, wiring only: gymnasium cannot be installed here, so
+# a stub package with its module layout (gymnasium.spaces, gymnasium.vector
+# with VectorEnv and AutoresetMode, gymnasium.vector.utils.batch_space)
+# checks that manyworlds.envs picks it up. It does not check Gymnasium's own
+# behaviour.
+
+STUB = {
+    "gymnasium/__init__.py": "from . import spaces, vector\n",
+    # Self-contained: manyworlds.envs._compat is still being imported when
+    # it imports gymnasium.
+    "gymnasium/spaces.py": (
+        "import numpy as np\n"
+        "class Box:\n"
+        "    def __init__(self, low, high, shape=None, dtype=np.float32, seed=None):\n"
+        "        self.shape = tuple(shape)\n"
+        "        self.dtype = np.dtype(dtype)\n"
+        "        self.low = np.broadcast_to(np.asarray(low, dtype), self.shape).copy()\n"
+        "        self.high = np.broadcast_to(np.asarray(high, dtype), self.shape).copy()\n"
+        "class Discrete:\n"
+        "    def __init__(self, n, seed=None, start=0):\n"
+        "        self.n, self.start = n, start\n"),
+    "gymnasium/vector/__init__.py": (
+        "import enum\n"
+        "class AutoresetMode(enum.Enum):\n"
+        "    NEXT_STEP = 'NextStep'\n    SAME_STEP = 'SameStep'\n    DISABLED = 'Disabled'\n"
+        "class VectorEnv:\n"
+        "    metadata = {}\n    closed = False\n    _np_random = None\n"
+        "    @property\n"
+        "    def np_random(self):\n"
+        "        return self._np_random\n"
+        "    def close(self):\n        self.closed = True\n"),
+    "gymnasium/vector/utils.py": (
+        "from ..spaces import Box\n"
+        "def batch_space(space, n):\n"
+        "    return Box(space.low, space.high, (n, *space.shape), space.dtype)\n"),
+}
+
+STUB_CHECK = """
+import numpy as np, gymnasium, manyworlds.envs as envs
+assert envs.HAVE_GYMNASIUM
+env = envs.make("cartpole-swingup", num_envs=4, autoreset_mode="SameStep", max_episode_steps=2)
+assert isinstance(env, gymnasium.vector.VectorEnv)
+assert envs.AutoresetMode is gymnasium.vector.AutoresetMode
+assert env.metadata["autoreset_mode"] is gymnasium.vector.AutoresetMode.SAME_STEP
+assert type(env.single_observation_space) is gymnasium.spaces.Box
+assert type(env.action_space) is gymnasium.spaces.Box and env.action_space.shape == (4, 1)
+obs, info = env.reset(seed=0)
+env.step(np.zeros((4, 1), np.float32))
+obs, reward, terminated, truncated, info = env.step(np.zeros((4, 1), np.float32))
+assert truncated.all() and info["_final_obs"].all()
+env.close()
+print("stub ok")
+"""
+
+
+def test_gymnasium_path_wiring_with_a_stub(tmp_path):
+    import os
+    import subprocess
+    import sys
+    for name, text in STUB.items():
+        path = tmp_path / name
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(text)
+    env = dict(os.environ)
+    env["PYTHONPATH"] = os.pathsep.join([str(tmp_path)] + sys.path)
+    env["PYTHONDONTWRITEBYTECODE"] = "1"
+    result = subprocess.run([sys.executable, "-c", STUB_CHECK], env=env, capture_output=True,
+                            text=True, timeout=120)
+    assert result.returncode == 0, result.stderr
+    assert "stub ok" in result.stdout
