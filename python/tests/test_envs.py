@@ -160,6 +160,7 @@ def test_next_step_resets_only_the_done_worlds():
     before = obs.copy()
     obs, reward, terminated, truncated, info = env.step(actions)
     assert not terminated.any() and reward[5] == 0.0
+    assert "unhealthy" not in info  # world 5 was reset, not flagged again
     assert np.isfinite(obs).all() and env.batch.unhealthy_world_count == 0
     assert abs(obs[5, 0]) <= 0.1 and obs[5, 1] > math.cos(0.035)  # a balance start
     assert not np.array_equal(obs[4], before[4])  # the others went on

@@ -197,6 +197,8 @@ class ManyWorldsVectorEnv(_compat.VectorEnvBase):
         self._read_state()
 
         unhealthy = self.batch.health != 0
+        if pending is not None:
+            unhealthy &= ~pending  # reset below: their episode already ended
         obs = self._observe()
         reward = np.asarray(self._reward(actions), np.float64)
         terminated = np.asarray(self._terminated(), np.bool_) | unhealthy
