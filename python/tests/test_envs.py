@@ -165,6 +165,21 @@ def test_next_step_resets_only_the_done_worlds():
     assert abs(obs[5, 0]) <= 0.1 and obs[5, 1] > math.cos(0.035)  # a balance start
     assert not np.array_equal(obs[4], before[4])  # the others went on
     assert (reward[np.arange(N) != 5] > 0).all()
+    # A world that breaks on a step on which others are reset: zeros, not NaN.
+    bad = actions.copy()
+    bad[6] = np.nan
+    env.step(bad)
+    env.step(bad)
+    obs, reward, terminated, truncated, info = env.step(actions)
+    assert not terminated[6]  # reset on this step
+    bad[5] = np.nan
+    env.step(bad)  # world 5 and 6 break
+    bad[:] = 0.0
+    bad[7] = np.nan
+    obs, reward, terminated, truncated, info = env.step(bad)  # 5, 6 reset; 7 breaks
+    np.testing.assert_array_equal(terminated, np.arange(N) == 7)
+    np.testing.assert_array_equal(obs[7], 0.0)
+    assert np.isfinite(obs).all()
 
 
 def test_same_step_autoreset():

@@ -215,6 +215,7 @@ class ManyWorldsVectorEnv(_compat.VectorEnvBase):
             if pending.any():
                 self._reset_worlds(pending, {})
                 obs = self._observe()
+                obs[unhealthy] = 0.0  # (worlds that broke this step, not reset yet)
                 reward[pending] = 0.0
                 terminated[pending] = False
                 truncated[pending] = False
