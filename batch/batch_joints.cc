@@ -2,7 +2,6 @@
 // batch/joint_coordinates.h; here only the world loop and the size checks).
 
 #include <algorithm>
-#include <ranges>
 #include <string>
 #include <utility>
 #include <vector>
@@ -14,10 +13,13 @@
 namespace manyworlds {
 namespace {
 
-// The real worlds of a block (the last block may hold padding lanes).
-auto WorldsOf(const Batch::Impl& batch, std::size_t block) {
-  return std::views::iota(block * kLaneWidth,
-                          std::min((block + 1) * kLaneWidth, batch.world_count_));
+// The real worlds of a block, [first, end) (the last block may hold padding
+// lanes). A plain range: clang 14 cannot use libstdc++ 12's std::views::iota.
+struct WorldRange {
+  std::size_t first, end;
+};
+WorldRange WorldsOf(const Batch::Impl& batch, std::size_t block) {
+  return {block * kLaneWidth, std::min((block + 1) * kLaneWidth, batch.world_count_)};
 }
 
 }  // namespace
@@ -35,7 +37,7 @@ void Batch::GetJointCoordinates(std::size_t constraint, std::span<float> out) co
   const std::size_t count = JointCoordinateCount(constraint);
   batch.CheckSize(out.size(), batch.world_count_ * count, "GetJointCoordinates");
   batch.ForEachBlock([&](std::size_t block) {
-    for (std::size_t world : WorldsOf(batch, block)) {
+    for (auto [world, end] = WorldsOf(batch, block); world < end; ++world) {
       JointCoordinatesOfLane(batch.plan_, batch.Block(block), Impl::Lane(world), constraint,
                              out.data() + world * count);
     }
@@ -60,7 +62,7 @@ void Batch::GetJointCoordinates(std::span<float> out) const {
     offset += count;
   }
   batch.ForEachBlock([&](std::size_t block) {
-    for (std::size_t world : WorldsOf(batch, block)) {
+    for (auto [world, end] = WorldsOf(batch, block); world < end; ++world) {
       for (const auto& [c, offset] : read) {
         JointCoordinatesOfLane(batch.plan_, batch.Block(block), Impl::Lane(world), c,
                                out.data() + world * per_world + offset);
@@ -78,7 +80,7 @@ void Batch::GetMotorForces(std::size_t constraint, std::span<float> out) const {
   const std::size_t count = MotorForceCount(constraint);
   batch.CheckSize(out.size(), batch.world_count_ * count, "GetMotorForces");
   batch.ForEachBlock([&](std::size_t block) {
-    for (std::size_t world : WorldsOf(batch, block)) {
+    for (auto [world, end] = WorldsOf(batch, block); world < end; ++world) {
       MotorForcesOfLane(batch.plan_, batch.Block(block), Impl::Lane(world), constraint,
                         batch.previous_substep_dt_, out.data() + world * count);
     }
