@@ -148,8 +148,7 @@ void Batch::Impl::Step(const StepSettings& settings, std::stop_token stop) {
   auto step_blocks = [&](const tbb::blocked_range<std::size_t>& range) {
     for (std::size_t block = range.begin(); block != range.end(); ++block) {
       if (stoppable && stop.stop_requested()) {
-        const std::size_t end = std::min((block + 1) * kLaneWidth, world_count_);
-        for (std::size_t world = block * kLaneWidth; world < end; ++world) {
+        for (auto [world, end] = WorldsOf(block); world < end; ++world) {
           health_[world] = kNotStepped;
         }
         continue;
@@ -173,10 +172,8 @@ void Batch::Impl::Step(const StepSettings& settings, std::stop_token stop) {
 // unhealthy worlds; runs in the block's task, while the block is in cache,
 // and touches only this block's worlds.
 void Batch::Impl::RecordHealth(std::size_t block, bool unhealthy, bool reset_unhealthy) {
-  const std::size_t first = block * kLaneWidth;
-  const std::size_t end = std::min(first + kLaneWidth, world_count_);
   const auto& lanes = At<WorldHealthLanes>(Block(block), plan_.health_offset);
-  for (std::size_t world = first; world < end; ++world) {
+  for (auto [world, end] = WorldsOf(block); world < end; ++world) {
     std::uint8_t bits = pending_input_[world];
     pending_input_[world] = 0;
     if (unhealthy) {
@@ -282,10 +279,10 @@ namespace {
 // 140 us, now 17.
 template <std::size_t kCount>
 void ReadStateColumns(const Batch::Impl& batch, std::size_t first, float* out) {
-  const std::size_t worlds = batch.world_count_, bodies = batch.plan_.bodies.size();
+  const std::size_t bodies = batch.plan_.bodies.size();
   batch.ForEachBlock([&](std::size_t block) {
-    const std::size_t block_first = block * kLaneWidth;
-    const std::size_t lanes = std::min(kLaneWidth, worlds - block_first);
+    const auto [block_first, block_end] = batch.WorldsOf(block);
+    const std::size_t lanes = block_end - block_first;
     for (std::size_t b = 0; b < bodies; ++b) {
       const BodyLanes& body = batch.In<BodyLanes>(block_first, batch.plan_.bodies[b].offset);
       const LaneArray* const row[kStateFloatsPerBody] = {
@@ -395,8 +392,7 @@ void Batch::Impl::ResetWorld(std::size_t world) {
 // threads half of those blocks sit in the other core's cache after Step.
 void Batch::Impl::ResetWorlds(std::span<const std::uint8_t> mask) {
   ForEachBlock([&](std::size_t block) {
-    const std::size_t end = std::min((block + 1) * kLaneWidth, world_count_);
-    for (std::size_t w = block * kLaneWidth; w < end; ++w) {
+    for (auto [w, end] = WorldsOf(block); w < end; ++w) {
       if (mask[w] == 0) continue;
       ResetWorld(w);
       health_[w] = 0;

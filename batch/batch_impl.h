@@ -8,6 +8,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <cstddef>
@@ -38,6 +39,15 @@ class Batch::Impl {
   }
   static std::byte* Bytes(LaneArray* arrays) { return reinterpret_cast<std::byte*>(arrays); }
   static std::size_t Lane(std::size_t world) { return world % kLaneWidth; }
+  // The real worlds of a block, [first, end): the last block may hold
+  // padding lanes. (A plain pair: clang 14 cannot use libstdc++ 12's
+  // std::views::iota.)
+  struct WorldRange {
+    std::size_t first, end;
+  };
+  WorldRange WorldsOf(std::size_t block) const {
+    return {block * kLaneWidth, std::min((block + 1) * kLaneWidth, world_count_)};
+  }
 
   std::byte* Block(std::size_t block) {
     return Bytes(storage_.data() + block * arrays_per_block_);

@@ -11,18 +11,6 @@
 #include "manyworlds/batch.h"
 
 namespace manyworlds {
-namespace {
-
-// The real worlds of a block, [first, end) (the last block may hold padding
-// lanes). A plain range: clang 14 cannot use libstdc++ 12's std::views::iota.
-struct WorldRange {
-  std::size_t first, end;
-};
-WorldRange WorldsOf(const Batch::Impl& batch, std::size_t block) {
-  return {block * kLaneWidth, std::min((block + 1) * kLaneWidth, batch.world_count_)};
-}
-
-}  // namespace
 
 std::size_t Batch::JointCoordinateCount(std::size_t constraint) const {
   return manyworlds::JointCoordinateCount(impl().Constraint(constraint));
@@ -37,7 +25,7 @@ void Batch::GetJointCoordinates(std::size_t constraint, std::span<float> out) co
   const std::size_t count = JointCoordinateCount(constraint);
   batch.CheckSize(out.size(), batch.world_count_ * count, "GetJointCoordinates");
   batch.ForEachBlock([&](std::size_t block) {
-    for (auto [world, end] = WorldsOf(batch, block); world < end; ++world) {
+    for (auto [world, end] = batch.WorldsOf(block); world < end; ++world) {
       JointCoordinatesOfLane(batch.plan_, batch.Block(block), Impl::Lane(world), constraint,
                              out.data() + world * count);
     }
@@ -62,7 +50,7 @@ void Batch::GetJointCoordinates(std::span<float> out) const {
     offset += count;
   }
   batch.ForEachBlock([&](std::size_t block) {
-    for (auto [world, end] = WorldsOf(batch, block); world < end; ++world) {
+    for (auto [world, end] = batch.WorldsOf(block); world < end; ++world) {
       for (const auto& [c, offset] : read) {
         JointCoordinatesOfLane(batch.plan_, batch.Block(block), Impl::Lane(world), c,
                                out.data() + world * per_world + offset);
@@ -80,7 +68,7 @@ void Batch::GetMotorForces(std::size_t constraint, std::span<float> out) const {
   const std::size_t count = MotorForceCount(constraint);
   batch.CheckSize(out.size(), batch.world_count_ * count, "GetMotorForces");
   batch.ForEachBlock([&](std::size_t block) {
-    for (auto [world, end] = WorldsOf(batch, block); world < end; ++world) {
+    for (auto [world, end] = batch.WorldsOf(block); world < end; ++world) {
       MotorForcesOfLane(batch.plan_, batch.Block(block), Impl::Lane(world), constraint,
                         batch.previous_substep_dt_, out.data() + world * count);
     }

@@ -37,17 +37,6 @@ const char* SettingsTypeName(const ConstraintSettings& settings) {
       settings);
 }
 
-DriveKind DriveOf(MotorState state, float max_friction) {
-  switch (state) {
-    case MotorState::kOff:
-      return max_friction > 0.0f ? DriveKind::kFriction : DriveKind::kNone;
-    case MotorState::kVelocity: return DriveKind::kVelocity;
-    case MotorState::kPosition: return DriveKind::kPosition;
-    case MotorState::kPositionAndVelocity: return DriveKind::kPositionAndVelocity;
-  }
-  return DriveKind::kNone;
-}
-
 // Bump allocator over one block; every struct is a whole number of LaneArrays.
 class BlockLayout {
  public:
@@ -225,6 +214,17 @@ const char* ConstraintTypeName(ConstraintType type) {
     case ConstraintType::kPath: return "path";
   }
   return "unknown";
+}
+
+DriveKind DriveOf(MotorState state, float max_friction) {
+  switch (state) {
+    case MotorState::kOff:
+      return max_friction > 0.0f ? DriveKind::kFriction : DriveKind::kNone;
+    case MotorState::kVelocity: return DriveKind::kVelocity;
+    case MotorState::kPosition: return DriveKind::kPosition;
+    case MotorState::kPositionAndVelocity: return DriveKind::kPositionAndVelocity;
+  }
+  return DriveKind::kNone;
 }
 
 const char* DriveKindName(DriveKind kind) {

@@ -50,6 +50,8 @@ enum class DriveKind : std::uint8_t {
   kPositionAndVelocity,  // both
 };
 const char* DriveKindName(DriveKind kind);
+// The drive a motor state gives a row (friction when off with max friction > 0).
+DriveKind DriveOf(MotorState state, float max_friction);
 
 // How a six-DOF constraint is built (spec 3, SixDOF): a scene setting, the
 // same in every world.

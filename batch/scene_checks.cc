@@ -196,11 +196,7 @@ void CheckMotor(const std::string& what, MotorState state, const MotorSettings& 
   CheckMaxFriction(what, friction_field, max_friction);
   CheckMotorLimits(what, motor_field + ".min_force_limit / max_force_limit",
                    motor.min_force_limit, motor.max_force_limit);
-  const DriveKind drive = state == MotorState::kPosition ? DriveKind::kPosition
-                          : state == MotorState::kPositionAndVelocity
-                              ? DriveKind::kPositionAndVelocity
-                              : DriveKind::kVelocity;  // the spring is not used
-  CheckMotorSpring(what, motor_field + ".spring", drive, motor.spring);
+  CheckMotorSpring(what, motor_field + ".spring", DriveOf(state, max_friction), motor.spring);
 }
 
 LimitRange CheckHingeLimits(const std::string& what, float min, float max) {

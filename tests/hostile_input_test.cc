@@ -35,8 +35,8 @@ constexpr float kInf = std::numeric_limits<float>::infinity();
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 constexpr std::size_t kWorlds = 40;
 
-// A box on a slider along X from a static ground, with a position motor.
-Scene SliderScene(float min, float max) {
+// A static ground (body 0) and a box 1 m above it (body 1).
+Scene GroundAndBox() {
   Scene scene;
   BodySettings ground;
   ground.name = "ground";
@@ -44,11 +44,18 @@ Scene SliderScene(float min, float max) {
   BodySettings box;
   box.name = "box";
   box.position = {0, 1, 0};
-  const std::size_t g = scene.AddBody(ground), b = scene.AddBody(box);
+  scene.AddBody(ground);
+  scene.AddBody(box);
+  return scene;
+}
+
+// The box on a slider along X from the ground, with a position motor.
+Scene SliderScene(float min, float max) {
+  Scene scene = GroundAndBox();
   SliderConstraintSettings slider;
   slider.name = "rail";
-  slider.body1 = g;
-  slider.body2 = b;
+  slider.body1 = 0;
+  slider.body2 = 1;
   slider.point1 = slider.point2 = {0, 1, 0};
   slider.limits_min = min;
   slider.limits_max = max;
@@ -60,7 +67,7 @@ Scene SliderScene(float min, float max) {
 
 // The box on a six-DOF joint: X limited by `min_x, max_x`, Y and Z fixed.
 Scene SixDofScene(float min_x, float max_x) {
-  Scene scene = SliderScene(-FLT_MAX, FLT_MAX);
+  Scene scene = GroundAndBox();
   SixDofConstraintSettings six;
   six.name = "six";
   six.body1 = 0;
@@ -70,10 +77,8 @@ Scene SixDofScene(float min_x, float max_x) {
   six.limit_max[0] = max_x;
   six.MakeFixedAxis(SixDofAxis::kTranslationY);
   six.MakeFixedAxis(SixDofAxis::kTranslationZ);
-  Scene result;
-  for (const BodySettings& body : scene.bodies()) result.AddBody(body);
-  result.AddConstraint(six);
-  return result;
+  scene.AddConstraint(six);
+  return scene;
 }
 
 // Every byte a Batch holds, as a "nothing was written" witness.
