@@ -702,6 +702,12 @@ float Batch::MaxConstraintError(std::size_t world) const {
                                   Impl::Lane(world));
 }
 
+ConstraintErrorSplit Batch::MaxConstraintErrorSplit(std::size_t world) const {
+  impl().CheckWorld(world);
+  return MaxConstraintErrorSplitOfLane(impl().plan_, impl().Block(world / kLaneWidth),
+                                       Impl::Lane(world));
+}
+
 double Batch::ConstraintError(std::size_t world, std::size_t constraint) const {
   impl().CheckWorld(world);
   impl().Constraint(constraint);  // throws for an index out of range

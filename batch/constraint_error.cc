@@ -83,30 +83,30 @@ double AnchorVelocityError(const Pose& b1, const Motion& m1, const Pose& b2, con
 
 }  // namespace
 
-double ConstraintErrorOfLane(const StepPlan& plan, const std::byte* block, std::size_t lane,
-                             std::size_t index) {
+ConstraintErrorSplit ConstraintErrorSplitOfLane(const StepPlan& plan, const std::byte* block,
+                                               std::size_t lane, std::size_t index) {
   const LaneReader read{block, lane};
   const ConstraintPlan& c = plan.constraints[index];
   const Pose b1 = BodyPose(plan, read, c.body1);
   const Pose b2 = BodyPose(plan, read, c.body2);
   switch (c.type) {
     case ConstraintType::kPoint:
-      return AnchorError(b1, b2, read, read.at<PointConstraintLanes>(c.offset).anchors);
+      return {AnchorError(b1, b2, read, read.at<PointConstraintLanes>(c.offset).anchors), 0.0};
     case ConstraintType::kFixed: {
       const auto& s = read.at<FixedConstraintLanes>(c.offset);
-      return std::max(AnchorError(b1, b2, read, s.anchors),
-                      RestRotationError(b1, b2, read(s.inv_initial_orientation)));
+      return {AnchorError(b1, b2, read, s.anchors),
+              RestRotationError(b1, b2, read(s.inv_initial_orientation))};
     }
     case ConstraintType::kHinge: {
       const auto& s = read.at<HingeConstraintLanes>(c.offset);
       const Vector a1 = b1.q * read(s.hinge_axis1_local);
       const Vector a2 = b2.q * read(s.hinge_axis2_local);
-      double error = std::max(AnchorError(b1, b2, read, s.anchors),
-                              std::atan2(a1.cross(a2).norm(), a1.dot(a2)));
+      ConstraintErrorSplit error{AnchorError(b1, b2, read, s.anchors),
+                                 std::atan2(a1.cross(a2).norm(), a1.dot(a2))};
       if (c.has_limits()) {
         const auto& limit = read.at<AngularLimitLanes>(c.limit_offset);
-        error = std::max(error, LimitViolation(HingeAngle(b1, b2, read, s), read(limit.min),
-                                               read(limit.max)));
+        error.angular = std::max(error.angular, LimitViolation(HingeAngle(b1, b2, read, s),
+                                                               read(limit.min), read(limit.max)));
       }
       return error;
     }
@@ -114,16 +114,16 @@ double ConstraintErrorOfLane(const StepPlan& plan, const std::byte* block, std::
       const auto& s = read.at<SliderConstraintLanes>(c.offset);
       Vector u, axis;
       const double d = SliderPosition(b1, b2, read, s, &u, &axis);
-      double error = std::max((u - d * axis).norm(),
-                              RestRotationError(b1, b2, read(s.inv_initial_orientation)));
+      ConstraintErrorSplit error{(u - d * axis).norm(),
+                                 RestRotationError(b1, b2, read(s.inv_initial_orientation))};
       if (c.has_limits()) {
         const auto& limit = read.at<LinearLimitLanes>(c.limit_offset);
-        error = std::max(error, LimitViolation(d, read(limit.min), read(limit.max)));
+        error.linear = std::max(error.linear, LimitViolation(d, read(limit.min), read(limit.max)));
       }
       return error;
     }
     case ConstraintType::kGear: {
-      if (c.helper1 == kNoConstraint) return 0.0;
+      if (c.helper1 == kNoConstraint) return {};
       const auto& s = read.at<GearConstraintLanes>(c.offset);
       const ConstraintPlan& h1 = plan.constraints[c.helper1];
       const ConstraintPlan& h2 = plan.constraints[c.helper2];
@@ -133,10 +133,10 @@ double ConstraintErrorOfLane(const StepPlan& plan, const std::byte* block, std::
       const double theta2 = (h2.body2 == c.body2 ? 1.0 : -1.0) *
                             HingeAngle(BodyPose(plan, read, h2.body1), BodyPose(plan, read, h2.body2),
                                        read, read.at<HingeConstraintLanes>(h2.offset));
-      return std::abs(Fold(theta1 + read(s.geometry.ratio) * theta2));
+      return {0.0, std::abs(Fold(theta1 + read(s.geometry.ratio) * theta2))};
     }
     case ConstraintType::kRackAndPinion: {
-      if (c.helper1 == kNoConstraint) return 0.0;
+      if (c.helper1 == kNoConstraint) return {};
       const auto& s = read.at<RackAndPinionConstraintLanes>(c.offset);
       const ConstraintPlan& h = plan.constraints[c.helper1];
       const ConstraintPlan& sl = plan.constraints[c.helper2];
@@ -146,14 +146,15 @@ double ConstraintErrorOfLane(const StepPlan& plan, const std::byte* block, std::
       const double d = (sl.body2 == c.body2 ? 1.0 : -1.0) *
                        SliderPosition(BodyPose(plan, read, sl.body1), BodyPose(plan, read, sl.body2),
                                       read, read.at<SliderConstraintLanes>(sl.offset));
-      return std::abs(Fold(theta - read(s.geometry.ratio) * d));
+      // theta - r d: the ratio (rad/m) turns the rack's metres into radians.
+      return {0.0, std::abs(Fold(theta - read(s.geometry.ratio) * d))};
     }
     case ConstraintType::kDistance: {
       const auto& s = read.at<DistanceConstraintLanes>(c.offset);
       const auto& limit = read.at<LinearLimitLanes>(c.limit_offset);
       const double length = ((b2.x + b2.q * read(s.anchors.r2_local)) -
                              (b1.x + b1.q * read(s.anchors.r1_local))).norm();
-      return LimitViolation(length, read(limit.min), read(limit.max));
+      return {LimitViolation(length, read(limit.min), read(limit.max)), 0.0};
     }
     case ConstraintType::kCone: {
       const auto& s = read.at<ConeConstraintLanes>(c.offset);
@@ -161,29 +162,30 @@ double ConstraintErrorOfLane(const StepPlan& plan, const std::byte* block, std::
       const Vector t2 = b2.q * read(s.twist_axis2_local);
       const double angle = std::atan2(t1.cross(t2).norm(), t1.dot(t2));
       const double half_cone = std::acos(std::clamp(read(s.cos_half_cone_angle), -1.0, 1.0));
-      return std::max(AnchorError(b1, b2, read, s.anchors), std::max(0.0, angle - half_cone));
+      return {AnchorError(b1, b2, read, s.anchors), std::max(0.0, angle - half_cone)};
     }
     case ConstraintType::kSwingTwist: {
       const auto& s = read.at<SwingTwistConstraintLanes>(c.offset);
       const Rotation frame1 = b1.q * read(s.frames.constraint_to_body1);
       const Rotation frame2 = b2.q * read(s.frames.constraint_to_body2);
-      return std::max(AnchorError(b1, b2, read, s.anchors),
-                      SwingTwistViolation((frame1.conjugate() * frame2).normalized(),
-                                          c.swing_twist, read, s.limits));
+      return {AnchorError(b1, b2, read, s.anchors),
+              SwingTwistViolation((frame1.conjugate() * frame2).normalized(), c.swing_twist,
+                                  read, s.limits)};
     }
     case ConstraintType::kSixDof: {
       const auto& s = read.at<SixDofConstraintLanes>(c.offset);
       const Rotation frame1 = b1.q * read(s.frames.constraint_to_body1);
       const Rotation frame2 = b2.q * read(s.frames.constraint_to_body2);
-      double error = 0.0;
+      ConstraintErrorSplit error;
       if (c.six_dof.rotation_euler) {
-        error = RestRotationError(b1, b2, read(s.inv_initial_orientation));
+        error.angular = RestRotationError(b1, b2, read(s.inv_initial_orientation));
       } else if (c.six_dof.rotation_limits) {
-        error = SwingTwistViolation((frame1.conjugate() * frame2).normalized(), c.swing_twist,
-                                    read, s.rotation_limits);
+        error.angular = SwingTwistViolation((frame1.conjugate() * frame2).normalized(),
+                                            c.swing_twist, read, s.rotation_limits);
       }
       if (c.six_dof.translation_point) {
-        return std::max(error, AnchorError(b1, b2, read, s.fixed_anchors));
+        error.linear = AnchorError(b1, b2, read, s.fixed_anchors);
+        return error;
       }
       if (!c.six_dof.translation_rows) return error;
       const Vector u = (b2.x + b2.q * read(s.anchors.r2_local)) -
@@ -192,7 +194,8 @@ double ConstraintErrorOfLane(const StepPlan& plan, const std::byte* block, std::
       for (int i = 0; i < 3; ++i) {
         if (c.six_dof.translation[i] == AxisLimitKind::kFree) continue;
         const double d = u.dot(frame1 * Vector::Unit(i));
-        error = std::max(error, LimitViolation(d, read(limits[i].min), read(limits[i].max)));
+        error.linear =
+            std::max(error.linear, LimitViolation(d, read(limits[i].min), read(limits[i].max)));
       }
       return error;
     }
@@ -209,8 +212,8 @@ double ConstraintErrorOfLane(const StepPlan& plan, const std::byte* block, std::
       const Vector t = path_to_world * on_path.tangent;
       const bool at_end = !c.path_looping && (on_path.fraction <= 0.0 ||
                                               on_path.fraction >= c.Path().max_fraction());
-      double error = (u - u.dot(t) * t).norm();
-      if (at_end) error = std::max(error, std::abs(u.dot(t)));
+      ConstraintErrorSplit error{(u - u.dot(t) * t).norm(), 0.0};
+      if (at_end) error.linear = std::max(error.linear, std::abs(u.dot(t)));
       const Rotation frame2 = b2.q * read(s.attachment_to_body2_rotation);
       const Rotation path_frame = path_to_world * on_path.frame;
       switch (c.path_rotation) {
@@ -223,14 +226,14 @@ double ConstraintErrorOfLane(const StepPlan& plan, const std::byte* block, std::
                            : c.path_rotation == PathRotation::kConstrainAroundNormal ? 2
                                                                                       : 1;
           const Vector a = path_frame * Vector::Unit(axis), b = frame2 * Vector::Unit(axis);
-          error = std::max(error, std::atan2(a.cross(b).norm(), a.dot(b)));
+          error.angular = std::atan2(a.cross(b).norm(), a.dot(b));
           break;
         }
         case PathRotation::kConstrainToPath:
-          error = std::max(error, RotationAngle(path_frame.conjugate() * frame2));
+          error.angular = RotationAngle(path_frame.conjugate() * frame2);
           break;
         case PathRotation::kFullyConstrained:
-          error = std::max(error, RestRotationError(b1, b2, read(s.inv_initial_orientation)));
+          error.angular = RestRotationError(b1, b2, read(s.inv_initial_orientation));
           break;
       }
       return error;
@@ -241,10 +244,16 @@ double ConstraintErrorOfLane(const StepPlan& plan, const std::byte* block, std::
           (b1.x + b1.q * read(s.anchors.r1_local) - read(s.fixed_point1)).norm() +
           read(s.geometry.ratio) *
               (b2.x + b2.q * read(s.anchors.r2_local) - read(s.fixed_point2)).norm();
-      return LimitViolation(length, read(s.min_length), read(s.max_length));
+      return {LimitViolation(length, read(s.min_length), read(s.max_length)), 0.0};
     }
   }
-  return 0.0;
+  return {};
+}
+
+double ConstraintErrorOfLane(const StepPlan& plan, const std::byte* block, std::size_t lane,
+                             std::size_t index) {
+  const ConstraintErrorSplit error = ConstraintErrorSplitOfLane(plan, block, lane, index);
+  return std::max(error.linear, error.angular);
 }
 
 double ConstraintVelocityErrorOfLane(const StepPlan& plan, const std::byte* block,
@@ -384,12 +393,20 @@ double ConstraintVelocityErrorOfLane(const StepPlan& plan, const std::byte* bloc
   return 0.0;
 }
 
-float MaxConstraintErrorOfLane(const StepPlan& plan, const std::byte* block, std::size_t lane) {
-  double error = 0.0;
+ConstraintErrorSplit MaxConstraintErrorSplitOfLane(const StepPlan& plan, const std::byte* block,
+                                                  std::size_t lane) {
+  ConstraintErrorSplit worst;
   for (std::size_t i = 0; i < plan.constraints.size(); ++i) {
-    error = std::max(error, ConstraintErrorOfLane(plan, block, lane, i));
+    const ConstraintErrorSplit error = ConstraintErrorSplitOfLane(plan, block, lane, i);
+    worst.linear = std::max(worst.linear, error.linear);
+    worst.angular = std::max(worst.angular, error.angular);
   }
-  return static_cast<float>(error);
+  return worst;
+}
+
+float MaxConstraintErrorOfLane(const StepPlan& plan, const std::byte* block, std::size_t lane) {
+  const ConstraintErrorSplit worst = MaxConstraintErrorSplitOfLane(plan, block, lane);
+  return static_cast<float>(std::max(worst.linear, worst.angular));
 }
 
 }  // namespace manyworlds

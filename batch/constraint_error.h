@@ -15,16 +15,28 @@
 #include <cstddef>
 
 #include "batch/plan.h"
+#include "manyworlds/batch.h"
 
 namespace manyworlds {
 
 // Largest error of any constraint in lane `lane` of `block`; mixes metres and
-// radians as documented above.
+// radians as documented above (the larger of the split's two parts).
 float MaxConstraintErrorOfLane(const StepPlan& plan, const std::byte* block, std::size_t lane);
 
-// The error of one constraint.
+// The same split by unit: the largest linear error (m: anchor separations,
+// distances off a slider axis or a path, linear limit violations, distance
+// and pulley length violations) and the largest angular error (rad: the
+// rotation and axis angles, angular limit violations, and the gear and
+// rack-and-pinion coupling errors, whose ratio makes them radians), each
+// over every constraint of the lane.
+ConstraintErrorSplit MaxConstraintErrorSplitOfLane(const StepPlan& plan, const std::byte* block,
+                                                  std::size_t lane);
+
+// The error of one constraint: max(linear, angular) of its split.
 double ConstraintErrorOfLane(const StepPlan& plan, const std::byte* block, std::size_t lane,
                              std::size_t constraint);
+ConstraintErrorSplit ConstraintErrorSplitOfLane(const StepPlan& plan, const std::byte* block,
+                                               std::size_t lane, std::size_t constraint);
 
 // Velocity residual |J v| of one constraint's equality rows, from the lane's
 // current velocities (m/s for linear rows, rad/s for angular rows; the

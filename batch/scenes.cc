@@ -3,6 +3,7 @@
 #include "manyworlds/scenes.h"
 
 #include "batch/scene_bodies.h"
+#include "batch/scene_ids.h"
 
 #include <algorithm>
 #include <array>
@@ -19,22 +20,36 @@ constexpr Float3 kX{1, 0, 0}, kY{0, 1, 0}, kZ{0, 0, 1};
 enum class SceneId { kCartpole, kChain16, kChain16R100, kChain16R1000, kChain64, kRackPinion,
                      kGearTrain, kRagdoll };
 
-constexpr std::array<std::pair<std::string_view, SceneId>, 8> kScenes{{
-    {"cartpole", SceneId::kCartpole},
-    {"chain16", SceneId::kChain16},
-    {"chain16-r100", SceneId::kChain16R100},
-    {"chain16-r1000", SceneId::kChain16R1000},
-    {"chain64", SceneId::kChain64},
-    {"rackpinion", SceneId::kRackPinion},
-    {"geartrain", SceneId::kGearTrain},
-    {"ragdoll", SceneId::kRagdoll},
+// Each scene with what it is there to test (SceneDescription; docs/scenes.md
+// has the full specification).
+struct SceneEntry {
+  std::string_view id;
+  SceneId scene;
+  std::string_view description;
+};
+constexpr std::array<SceneEntry, 8> kScenes{{
+    {"cartpole", SceneId::kCartpole,
+     "slider and hinge under a random cart force every step (RL control loop)"},
+    {"chain16", SceneId::kChain16, "16 ball joints released from horizontal: a long chain"},
+    {"chain16-r100", SceneId::kChain16R100,
+     "chain16 with a 100x heavier last link: mass ratio 100"},
+    {"chain16-r1000", SceneId::kChain16R1000,
+     "chain16 with a 1000x heavier last link: mass ratio 1000 (also a stress scene)"},
+    {"chain64", SceneId::kChain64,
+     "64 ball joints: convergence of a long chain (also a stress scene)"},
+    {"rackpinion", SceneId::kRackPinion,
+     "hinge velocity motor driving a slider through a rack-and-pinion coupling"},
+    {"geartrain", SceneId::kGearTrain,
+     "hinge velocity motor driving a second hinge through a gear coupling"},
+    {"ragdoll", SceneId::kRagdoll,
+     "floating humanoid: swing-twist limits, hinge position motors with random targets"},
 }};
 
 SceneId ParseId(std::string_view id) {
   std::string valid;
-  for (const auto& [name, scene] : kScenes) {
-    if (name == id) return scene;
-    valid += (valid.empty() ? "" : ", ") + std::string(name);
+  for (const SceneEntry& entry : kScenes) {
+    if (entry.id == id) return entry.scene;
+    valid += (valid.empty() ? "" : ", ") + std::string(entry.id);
   }
   throw std::invalid_argument("unknown reference scene '" + std::string(id) +
                               "'; valid ids: " + valid);
@@ -282,7 +297,7 @@ float ForceOf(std::uint64_t step_key, std::uint64_t world) {
 
 std::vector<std::string> ReferenceSceneIds() {
   std::vector<std::string> ids;
-  for (const auto& scene : kScenes) ids.emplace_back(scene.first);
+  for (const SceneEntry& entry : kScenes) ids.emplace_back(entry.id);
   return ids;
 }
 
@@ -316,7 +331,28 @@ Scene MakeScene(std::string_view id) {
   for (const std::string& reference : ReferenceSceneIds()) {
     if (reference == id) return MakeReferenceScene(id);
   }
-  return MakeStressScene(id);  // throws for an unknown id, listing the stress ids
+  if (scene_ids::StressSceneDescription(id).empty()) scene_ids::ThrowUnknownScene(id);
+  return MakeStressScene(id);
+}
+
+std::string SceneDescription(std::string_view id) {
+  for (const SceneEntry& entry : kScenes) {
+    if (entry.id == id) return std::string(entry.description);
+  }
+  const std::string_view stress = scene_ids::StressSceneDescription(id);
+  if (stress.empty()) scene_ids::ThrowUnknownScene(id);
+  return std::string(stress);
+}
+
+void scene_ids::ThrowUnknownScene(std::string_view id) {
+  const auto list = [](const std::vector<std::string>& ids) {
+    std::string text;
+    for (const std::string& one : ids) text += (text.empty() ? "" : ", ") + one;
+    return text;
+  };
+  throw std::invalid_argument("unknown scene '" + std::string(id) +
+                              "'; valid ids: reference scenes " + list(ReferenceSceneIds()) +
+                              "; stress scenes " + list(StressSceneIds()));
 }
 
 SceneActions::SceneActions(std::string_view id) {
@@ -326,6 +362,9 @@ SceneActions::SceneActions(std::string_view id) {
                            std::find(references.begin(), references.end(), id) ==
                                references.end();
   if (stress_only) return;  // no stress scene has an action
+  if (std::find(references.begin(), references.end(), id) == references.end()) {
+    scene_ids::ThrowUnknownScene(id);
+  }
   const SceneId scene = ParseId(id);
   if (scene == SceneId::kCartpole) {
     forces_per_world_ = 1;

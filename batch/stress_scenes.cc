@@ -12,6 +12,7 @@
 #include "manyworlds/scenes.h"
 
 #include "batch/scene_bodies.h"
+#include "batch/scene_ids.h"
 
 namespace manyworlds {
 namespace {
@@ -26,46 +27,51 @@ enum class StressId {
   kMassRange, kMassRangeHanging, kFar1e4
 };
 
-constexpr std::array<std::pair<std::string_view, StressId>, 21> kStressScenes{{
-    {"chain16-r1000", StressId::kChain16R1000},
-    {"chain64", StressId::kChain64},
-    {"spring-0.1", StressId::kSpring0_1},
-    {"spring-0.25", StressId::kSpring0_25},
-    {"spring-0.5", StressId::kSpring0_5},
-    {"spring-1.0", StressId::kSpring1_0},
-    {"spin-unstable", StressId::kSpinUnstable},
-    {"flywheel", StressId::kFlywheel},
-    {"singular-hinge-90", StressId::kSingularHinge90},
-    {"singular-hinge-180", StressId::kSingularHinge180},
-    {"singular-fixed-90", StressId::kSingularFixed90},
-    {"singular-fixed-180", StressId::kSingularFixed180},
-    {"singular-slider-90", StressId::kSingularSlider90},
-    {"singular-rackpinion", StressId::kSingularRackPinion},
-    {"singular-cone", StressId::kSingularCone},
-    {"singular-swingtwist", StressId::kSingularSwingTwist},
-    {"dt-1e-4", StressId::kDt1e4},
-    {"dt-1/15", StressId::kDt1_15},
-    {"mass-range", StressId::kMassRange},
-    {"mass-range-hanging", StressId::kMassRangeHanging},
-    {"far-1e4", StressId::kFar1e4},
+// Each stress scene with what it is there to test (SceneDescription).
+struct StressEntry {
+  std::string_view id;
+  StressId scene;
+  std::string_view description;
+};
+constexpr std::array<StressEntry, 21> kStressScenes{{
+    {"chain16-r1000", StressId::kChain16R1000, "the reference scene: mass ratio 1000"},
+    {"chain64", StressId::kChain64, "the reference scene: a 64-joint chain"},
+    {"spring-0.1", StressId::kSpring0_1, "stiff distance spring at 0.1 of Nyquist (3 Hz)"},
+    {"spring-0.25", StressId::kSpring0_25, "stiff distance spring at 0.25 of Nyquist (7.5 Hz)"},
+    {"spring-0.5", StressId::kSpring0_5, "stiff distance spring at 0.5 of Nyquist (15 Hz)"},
+    {"spring-1.0", StressId::kSpring1_0, "distance spring at the Nyquist edge (30 Hz)"},
+    {"spin-unstable", StressId::kSpinUnstable,
+     "free body spun about its intermediate axis: the flip Jolt leaves out"},
+    {"flywheel", StressId::kFlywheel, "hinged disc at Jolt's maximum angular velocity"},
+    {"singular-hinge-90", StressId::kSingularHinge90,
+     "hinge starting with its axes 90 deg apart"},
+    {"singular-hinge-180", StressId::kSingularHinge180,
+     "hinge starting with anti-parallel axes"},
+    {"singular-fixed-90", StressId::kSingularFixed90,
+     "fixed joint starting 90 deg from its rest pose"},
+    {"singular-fixed-180", StressId::kSingularFixed180,
+     "fixed joint starting 180 deg from its rest pose"},
+    {"singular-slider-90", StressId::kSingularSlider90,
+     "slider starting with its axis 90 deg from the rail's"},
+    {"singular-rackpinion", StressId::kSingularRackPinion,
+     "rack and pinion with the hinge axis parallel to the slider axis"},
+    {"singular-cone", StressId::kSingularCone, "cone joint starting with anti-parallel twist axes"},
+    {"singular-swingtwist", StressId::kSingularSwingTwist,
+     "swing-twist joint starting at a swing of pi"},
+    {"dt-1e-4", StressId::kDt1e4, "chain16 at a tiny step, dt 1e-4 s"},
+    {"dt-1/15", StressId::kDt1_15, "chain16 at a large step, dt 1/15 s"},
+    {"mass-range", StressId::kMassRange,
+     "10-link whip, 1e6 kg at the anchor down to 1e-3 kg at the tip"},
+    {"mass-range-hanging", StressId::kMassRangeHanging,
+     "10-link chain, 1e6 kg hanging from 1e-3 kg"},
+    {"far-1e4", StressId::kFar1e4, "chain16 1e4 m from the origin: float precision"},
 }};
 
-bool FindStressId(std::string_view id, StressId& out) {
-  for (const auto& [name, scene] : kStressScenes) {
-    if (name == id) {
-      out = scene;
-      return true;
-    }
+const StressEntry* FindStress(std::string_view id) {
+  for (const StressEntry& entry : kStressScenes) {
+    if (entry.id == id) return &entry;
   }
-  return false;
-}
-
-std::string StressIdList() {
-  std::string valid;
-  for (const auto& scene : kStressScenes) {
-    valid += (valid.empty() ? "" : ", ") + std::string(scene.first);
-  }
-  return valid;
+  return nullptr;
 }
 
 using scene_bodies::Dynamic;
@@ -331,18 +337,22 @@ Scene Far() {
 
 std::vector<std::string> StressSceneIds() {
   std::vector<std::string> ids;
-  for (const auto& scene : kStressScenes) ids.emplace_back(scene.first);
+  for (const StressEntry& entry : kStressScenes) ids.emplace_back(entry.id);
   return ids;
 }
 
 Scene MakeStressScene(std::string_view id) {
-  StressId scene;
-  if (!FindStressId(id, scene)) {
+  const StressEntry* entry = FindStress(id);
+  if (entry == nullptr) {
+    std::string valid;
+    for (const StressEntry& stress : kStressScenes) {
+      valid += (valid.empty() ? "" : ", ") + std::string(stress.id);
+    }
     throw std::invalid_argument("unknown stress scene '" + std::string(id) +
-                                "'; valid ids: " + StressIdList());
+                                "'; valid ids: " + valid);
   }
   const double pi = std::acos(-1.0);
-  switch (scene) {
+  switch (entry->scene) {
     case StressId::kChain16R1000: return MakeReferenceScene("chain16-r1000");
     case StressId::kChain64: return MakeReferenceScene("chain64");
     case StressId::kSpring0_1: return Spring(0.1f);
@@ -370,19 +380,20 @@ Scene MakeStressScene(std::string_view id) {
 
 StepSettings SceneStepSettings(std::string_view id) {
   StepSettings settings;
-  StressId scene;
-  if (FindStressId(id, scene)) {
-    if (scene == StressId::kDt1e4) settings.delta_time = 1.0e-4f;
-    if (scene == StressId::kDt1_15) settings.delta_time = 1.0f / 15.0f;
+  if (const StressEntry* entry = FindStress(id)) {
+    if (entry->scene == StressId::kDt1e4) settings.delta_time = 1.0e-4f;
+    if (entry->scene == StressId::kDt1_15) settings.delta_time = 1.0f / 15.0f;
     return settings;
   }
   for (const std::string& reference : ReferenceSceneIds()) {
     if (reference == id) return settings;
   }
-  std::string valid;
-  for (const std::string& reference : ReferenceSceneIds()) valid += reference + ", ";
-  throw std::invalid_argument("SceneStepSettings: unknown scene '" + std::string(id) +
-                              "'; valid ids: " + valid + StressIdList());
+  scene_ids::ThrowUnknownScene(id);
+}
+
+std::string_view scene_ids::StressSceneDescription(std::string_view id) {
+  const StressEntry* entry = FindStress(id);
+  return entry == nullptr ? std::string_view() : entry->description;
 }
 
 }  // namespace manyworlds

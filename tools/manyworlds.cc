@@ -1,5 +1,7 @@
 // manyworlds: step a reference scene in many worlds and report throughput and
 // constraint error; print a scene's plan; list the scenes (docs/scenes.md).
+// The run's report is tools/run_report.cc, its progress line and Ctrl-C stop
+// tools/progress.cc.
 //
 //   manyworlds run --scene cartpole --worlds 4096 --steps 1000 [--threads N]
 //                  [--substeps N] [--velocity-iterations N] [--position-iterations N]
@@ -9,11 +11,11 @@
 //   manyworlds sweep [--scenes A,B] [--worlds N] [--seconds S] [--small] ... (tools/sweep.h)
 //
 // Exit codes: 0 success, 1 the library, the file system or gnuplot refused
-// something (sweep: also an earlier report without --overwrite), 2 bad arguments.
+// something (sweep: also an earlier report without --overwrite), 2 bad
+// arguments (one line on stderr naming the argument and what is accepted, and
+// a hint), 130 a run stopped by Ctrl-C (SIGINT), after its report.
 
-#include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <exception>
@@ -28,6 +30,8 @@
 #include "manyworlds/scene.h"
 #include "manyworlds/scenes.h"
 #include "tools/options.h"
+#include "tools/progress.h"
+#include "tools/run_report.h"
 #include "tools/sweep.h"
 
 namespace {
@@ -46,9 +50,14 @@ constexpr const char* kUsage =
     "      threads 0 = every core, 1 substep, 10 velocity and 2 position iterations,\n"
     "      seed 1 for the actions; --mass-range-limit R >= 1 first raises every body\n"
     "      lighter than 1/R of the heaviest body joined to it through dynamic\n"
-    "      bodies, LimitMassRange, docs/stability.md; 0 = off, the default)\n"
+    "      bodies, LimitMassRange, docs/stability.md; 0 = off, the default).\n"
+    "      Constraint errors after the last step, linear (m) and angular (rad) apart,\n"
+    "      max and mean over worlds. On a terminal a progress line shows the steps\n"
+    "      done, world-steps/s and the time left; Ctrl-C stops at the next step,\n"
+    "      reports the steps done and exits with 130 (a second Ctrl-C kills)\n"
     "  manyworlds plan --scene ID     prints what one step of the scene runs\n"
-    "  manyworlds scenes              lists the reference and stress scene ids\n"
+    "  manyworlds scenes              lists every scene id: bodies, constraints and\n"
+    "                                 what it tests\n"
     "  manyworlds sweep [--scenes A,B] [--worlds N] [--seconds S] [--threads N]\n"
     "                   [--sample-worlds N] [--passes N] [--min-time S] [--grid knobs|full]\n"
     "                   [--out DIR] [--overwrite] [--seed N] [--small] [--mass-range-limit R]\n"
@@ -59,10 +68,25 @@ constexpr const char* kUsage =
     "      per scene (defaults: every scene, 1024 worlds timed on 1 thread, 1 s\n"
     "      simulated, errors over 16 worlds, out dir 'sweep', whose earlier report only\n"
     "      --overwrite replaces; --small: rackpinion and chain16, 64 worlds, 0.25 s,\n"
-    "      2 values per knob; see docs/accuracy.md)\n";
+    "      2 values per knob; see docs/accuracy.md)\n"
+    "  manyworlds help | --help | -h  prints this\n"
+    "exit codes: 0 done, 1 refused by the library or the file system, 2 bad\n"
+    "arguments, 130 run interrupted by Ctrl-C\n";
 
-// The scene of --scene; a UsageError naming the option for an unknown id.
+// The exit code of a run stopped by SIGINT: 128 + 2, what a shell reports
+// for a program the signal killed.
+constexpr int kExitInterrupted = 130;
+
+// The line after a usage error, instead of the whole usage.
+constexpr const char* kUsageHint = "run 'manyworlds --help' for usage";
+
+// The scene of --scene; a UsageError naming the option for a missing or
+// unknown id (the library's message lists every valid id).
 Scene SceneOf(const Options& options) {
+  if (!options.Has("--scene")) {
+    throw UsageError("--scene is required: a scene id, e.g. cartpole ('manyworlds scenes' "
+                     "lists them all)");
+  }
   try {
     return MakeScene(options.Text("--scene"));
   } catch (const std::invalid_argument& e) {
@@ -93,15 +117,12 @@ std::string MassRangeLimitOf(const Options& options, Scene& scene) {
   return text;
 }
 
+// One line per scene: id, bodies, constraints and what it tests.
 int Scenes() {
-  const std::vector<std::string> stress = StressSceneIds();
   for (const std::string& id : AllSceneIds()) {
     const Scene scene = MakeScene(id);
-    const bool is_stress = std::find(stress.begin(), stress.end(), id) != stress.end();
-    std::printf("%-19s %3zu bodies, %3zu constraints%s%s, dt %g s\n", id.c_str(),
-                scene.bodies().size(), scene.constraints().size(),
-                SceneActions(id).empty() ? "" : ", actions", is_stress ? ", stress" : "",
-                double(SceneStepSettings(id).delta_time));
+    std::printf("%-19s %3zu bodies %3zu constraints  %s\n", id.c_str(), scene.bodies().size(),
+                scene.constraints().size(), SceneDescription(id).c_str());
   }
   return 0;
 }
@@ -118,8 +139,8 @@ int Run(int argc, char** argv) {
                         {"--scene", "--worlds", "--steps", "--threads", "--substeps",
                          "--velocity-iterations", "--position-iterations", "--warmup",
                          "--seed", "--mass-range-limit"});
-  const std::string id = options.Text("--scene");
   Scene scene = SceneOf(options);
+  const std::string id = options.Text("--scene");
   const std::string mass_range = MassRangeLimitOf(options, scene);
   const std::size_t worlds = options.Number("--worlds", 4096, 1, std::uint64_t(1) << 26);
   const std::uint64_t steps = options.Number("--steps", 1000, 1, 1'000'000'000);
@@ -136,76 +157,42 @@ int Run(int argc, char** argv) {
 
   Batch batch(scene, worlds, batch_options);
   const SceneActions actions(id);
+  // Ctrl-C stops at the next step boundary and still reports; on a terminal
+  // a progress line shows how far the run is (tools/progress.h).
+  const tools::SigintStop sigint;
+  tools::ProgressLine progress(warmup + steps, worlds);
   std::uint64_t step = 0;
-  for (; step < warmup; ++step) {
+  for (; step < warmup && !sigint.requested(); ++step) {
     actions.Apply(batch, step, seed);
     batch.Step(settings);
+    progress.Update(step + 1);
   }
   const auto start = std::chrono::steady_clock::now();
-  for (; step < warmup + steps; ++step) {
+  for (; step < warmup + steps && !sigint.requested(); ++step) {
     actions.Apply(batch, step, seed);
     batch.Step(settings);
+    progress.Update(step + 1);
   }
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-
-  // Accuracy and health after the last step.
-  float max_error = 0.0f;
-  double sum_error = 0.0;
-  std::size_t bad_error = 0;
-  for (std::size_t w = 0; w < worlds; ++w) {
-    const float e = batch.MaxConstraintError(w);
-    if (!std::isfinite(e)) {
-      ++bad_error;
-      continue;
-    }
-    max_error = std::max(max_error, e);
-    sum_error += e;
-  }
-  // The library's own health check of the last step (WorldHealthBits).
-  std::size_t by_bit[4] = {0, 0, 0, 0};
-  for (const std::uint8_t bits : batch.WorldHealth()) {
-    for (int bit = 0; bit < 4; ++bit) by_bit[bit] += (bits >> bit) & 1u;
-  }
-
-  const double world_steps = double(worlds) * double(steps);
-  std::printf("scene:                %s (%zu bodies, %zu constraints)\n", id.c_str(),
-              batch.body_count(), batch.constraint_count());
-  std::printf("worlds:               %zu\n", worlds);
-  std::printf("threads:              %d\n", batch.threads());
-  std::printf("SIMD target:          %s, %zu float lanes per vector\n", batch.SimdTarget(),
-              batch.SimdLanes());
-  std::printf("precision:            float\n");
-  std::printf("mass-range limit:     %s\n", mass_range.c_str());
-  std::printf("iterations:           %d velocity, %d position, %d substep(s), Baumgarte %g\n",
-              settings.velocity_iterations, settings.position_iterations, settings.substeps,
-              double(settings.baumgarte));
-  std::printf("dt:                   %.6g s per step, gravity (%g, %g, %g) m/s^2\n",
-              double(settings.delta_time), double(settings.gravity[0]),
-              double(settings.gravity[1]), double(settings.gravity[2]));
-  const char* action_text =
-      actions.empty() ? "none"
-      : actions.forces_per_world() != 0
-          ? "every step (cart force along X, uniform [-10, 10] N)"
-          : "every step (elbow and knee position targets, uniform in their limits)";
-  std::printf("actions:              %s\n", action_text);
-  std::printf("timed:                %llu steps after %llu warm-up steps, %.3f s wall\n",
-              static_cast<unsigned long long>(steps), static_cast<unsigned long long>(warmup),
-              seconds);
-  std::printf("throughput:           %.4g world-steps/s\n", world_steps / seconds);
-  std::printf("time per world-step:  %.4g ns\n", seconds * 1e9 / world_steps);
-  std::printf("memory:               %zu bytes per world (state, parameters, scratch)\n",
-              batch.BytesPerWorld());
-  std::printf("constraint error:     max over worlds %.3g, mean over worlds %.3g, after step "
-              "%llu (m for linear rows, rad for angular rows)\n",
-              double(max_error), worlds > bad_error ? sum_error / double(worlds - bad_error) : 0.0,
-              static_cast<unsigned long long>(warmup + steps));
-  std::printf("unhealthy worlds:     %zu of %zu after the last step (non-finite state %zu, "
-              "velocity overflow %zu, position out of range %zu, non-finite input %zu); "
-              "%zu with a non-finite constraint error\n",
-              batch.UnhealthyWorldCount(), worlds, by_bit[0], by_bit[1], by_bit[2], by_bit[3],
-              bad_error);
-  return 0;
+  progress.Erase();
+  // A SIGINT after the last step changes nothing: the run is complete.
+  const bool interrupted = step < warmup + steps;
+  tools::PrintRunReport(batch, actions,
+                        {.scene_id = id,
+                         .mass_range = mass_range,
+                         .settings = settings,
+                         .warmup_steps = warmup,
+                         .timed_steps = steps,
+                         .steps_done = step,
+                         .timed_seconds = seconds,
+                         .interrupted = interrupted});
+  if (!interrupted) return 0;
+  std::fprintf(stderr, "manyworlds: interrupted by SIGINT after step %llu of %llu; the report "
+                       "covers the steps done\n",
+               static_cast<unsigned long long>(step),
+               static_cast<unsigned long long>(warmup + steps));
+  return kExitInterrupted;
 }
 
 }  // namespace
@@ -223,17 +210,21 @@ int main(int argc, char** argv) {
     if (command == "plan") return Plan(argc, argv);
     if (command == "sweep") return tools::Sweep(argc, argv);
     if (command == "scenes") {
-      if (argc > 2) throw UsageError("'scenes' takes no arguments");
+      if (argc > 2) {
+        throw UsageError("'scenes' takes no arguments, got '" + std::string(argv[2]) + "'");
+      }
       return Scenes();
     }
     if (command == "help") {
       std::printf("%s", kUsage);
       return 0;
     }
-    throw UsageError(command.empty() ? "no command given"
-                                     : "unknown command '" + std::string(command) + "'");
+    constexpr const char* kCommands = "; commands: run, plan, scenes, sweep, help";
+    throw UsageError(command.empty() ? std::string("no command given") + kCommands
+                                     : "unknown command '" + std::string(command) + "'" +
+                                           kCommands);
   } catch (const UsageError& e) {
-    std::fprintf(stderr, "manyworlds: %s\n%s", e.what(), kUsage);
+    std::fprintf(stderr, "manyworlds: %s\n%s\n", e.what(), kUsageHint);
     return 2;
   } catch (const SceneError& e) {
     std::fprintf(stderr, "manyworlds: the scene was refused: %s\n", e.what());

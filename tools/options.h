@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cstdio>
 #include <cstdint>
 #include <map>
 #include <stdexcept>
@@ -14,10 +15,28 @@
 
 namespace manyworlds::tools {
 
-// A bad command line: the message names the argument; exit code 2.
+// A bad command line: the one-line message names the argument and what
+// would be accepted; exit code 2.
 struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+
+// "a, b, c": for messages that list what is accepted.
+inline std::string JoinNames(const std::vector<std::string_view>& names) {
+  std::string text;
+  for (const std::string_view name : names) {
+    text += (text.empty() ? "" : ", ") + std::string(name);
+  }
+  return text;
+}
+
+// A number as a person writes it in a range ("0.001", "1e+30"), not
+// std::to_string's "0.001000".
+inline std::string ShortNumber(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
 
 class Options {
  public:
@@ -27,7 +46,8 @@ class Options {
     for (int i = 2; i < argc; ++i) {
       std::string_view arg = argv[i];
       if (!arg.starts_with("--")) {
-        throw UsageError("unexpected argument '" + std::string(arg) + "'");
+        throw UsageError("unexpected argument '" + std::string(arg) + "' for '" + argv[1] +
+                         "'; it takes options only: " + Accepted(known, flags));
       }
       if (std::find(flags.begin(), flags.end(), arg) != flags.end()) {
         Set(arg, "");
@@ -41,10 +61,14 @@ class Options {
         has_value = true;
       }
       if (std::find(known.begin(), known.end(), arg) == known.end()) {
-        throw UsageError("unknown option '" + std::string(arg) + "' for '" + argv[1] + "'");
+        throw UsageError("unknown option '" + std::string(arg) + "' for '" + argv[1] +
+                         "'; accepted: " + Accepted(known, flags));
       }
       if (!has_value) {
-        if (i + 1 >= argc) throw UsageError(std::string(arg) + " needs a value");
+        if (i + 1 >= argc) {
+          throw UsageError(std::string(arg) + " needs a value (" + std::string(arg) +
+                           " VALUE or " + std::string(arg) + "=VALUE)");
+        }
         value = argv[++i];
       }
       Set(arg, value);
@@ -86,13 +110,20 @@ class Options {
     const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
     if (error != std::errc() || end != text.data() + text.size() || !(value >= min) ||
         !(value <= max)) {
-      throw UsageError(name + " = '" + text + "' is not a number from " + std::to_string(min) +
-                       " to " + std::to_string(max));
+      throw UsageError(name + " = '" + text + "' is not a number from " + ShortNumber(min) +
+                       " to " + ShortNumber(max));
     }
     return value;
   }
 
  private:
+  static std::string Accepted(const std::vector<std::string_view>& known,
+                              const std::vector<std::string_view>& flags) {
+    std::vector<std::string_view> all = known;
+    all.insert(all.end(), flags.begin(), flags.end());
+    return JoinNames(all);
+  }
+
   // An option given twice is refused: which of the two was meant is a guess.
   void Set(std::string_view name, std::string_view value) {
     if (!values_.emplace(name, value).second) {
@@ -108,7 +139,8 @@ class Options {
 inline double MassRangeLimitOption(const Options& options) {
   const double limit = options.Real("--mass-range-limit", 0, 0, 1e30);
   if (limit != 0 && limit < 1) {
-    throw UsageError("--mass-range-limit must be 0 (off) or at least 1");
+    throw UsageError("--mass-range-limit = '" + options.Text("--mass-range-limit") +
+                     "' is neither 0 (off) nor a number from 1 to 1e+30");
   }
   return limit;
 }

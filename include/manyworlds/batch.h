@@ -90,6 +90,12 @@ struct StepSettings {
   bool gyroscopic = false;
 };
 
+// A world's constraint position error split by unit (Batch::MaxConstraintErrorSplit).
+struct ConstraintErrorSplit {
+  double linear = 0.0;   // m: rows that hold points together or on an axis, linear limits
+  double angular = 0.0;  // rad: rows that hold rotations, angular limits, gear and rack couplings
+};
+
 struct BatchOptions {
   int threads = 0;  // 0: every core TBB sees; at most kMaxThreads
   // Blocks of 16 worlds per TBB task; 0 picks enough tasks for the threads.
@@ -268,6 +274,11 @@ class Batch {
   // The largest position error of any constraint in a world after the last
   // step (m for linear rows, rad for angular rows), for accuracy reports.
   float MaxConstraintError(std::size_t world) const;
+  // The same two units apart: the largest linear error (m) and the largest
+  // angular error (rad) of any constraint in a world after the last step;
+  // MaxConstraintError is the larger of the two (batch/constraint_error.h
+  // lists which rows are which).
+  ConstraintErrorSplit MaxConstraintErrorSplit(std::size_t world) const;
   // The position error of one constraint of a world (as above), and the
   // velocity residual |J v| of its equality rows (m/s for linear rows, rad/s
   // for angular rows; limits, motors and friction excluded): see

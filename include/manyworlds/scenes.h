@@ -54,15 +54,23 @@ Scene MakeStressScene(std::string_view id);
 
 // The step settings a reference or stress scene is run with: StepSettings{}
 // (the spec's defaults) for every scene except dt-1e-4 (delta_time 1e-4 s)
-// and dt-1/15 (1/15 s). Throws std::invalid_argument for an unknown id.
+// and dt-1/15 (1/15 s). Throws std::invalid_argument for an unknown id, as
+// MakeScene.
 StepSettings SceneStepSettings(std::string_view id);
 
 // Every scene id, reference then stress (each once), and the scene of any of
 // them (MakeReferenceScene or MakeStressScene): what the main program, the
 // benchmarks and the accuracy sweep accept. Throws std::invalid_argument for
-// an unknown id, listing the valid ones.
+// an unknown id: "unknown scene 'ID'; valid ids: reference scenes cartpole,
+// ...; stress scenes chain16-r1000, ...", every id of AllSceneIds() grouped.
 std::vector<std::string> AllSceneIds();
 Scene MakeScene(std::string_view id);
+
+// What scene `id` (any of AllSceneIds()) is there to test, in a short phrase
+// for listings (`manyworlds scenes`, Python, docs; docs/scenes.md has the
+// full specification). Throws std::invalid_argument for an unknown id, as
+// MakeScene.
+std::string SceneDescription(std::string_view id);
 
 // A force (N, world space, through the centre of mass) on one body of one
 // world, acting during the next step.
@@ -85,7 +93,7 @@ struct MotorTarget {
 // action.
 class SceneActions {
  public:
-  // Throws std::invalid_argument for an unknown id, as MakeReferenceScene.
+  // Throws std::invalid_argument for an unknown id, as MakeScene.
   explicit SceneActions(std::string_view id);
 
   bool empty() const { return forces_per_world_ == 0 && targets_.empty(); }
