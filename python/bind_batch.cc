@@ -427,6 +427,16 @@ void BindReports(py::class_<Batch>& cls) {
           },
           "max_constraint_error of every world: float32 [world].")
       .def(
+          "max_constraint_error_split",
+          [](const Batch& batch, std::int64_t world) {
+            const ConstraintErrorSplit split = batch.MaxConstraintErrorSplit(
+                CheckedIndex(world, batch.world_count(), "world"));
+            return py::make_tuple(split.linear, split.angular);
+          },
+          py::arg("world"),
+          "(linear m, angular rad): the largest position error of the world's linear rows and "
+          "of its angular rows, apart (max_constraint_error is the larger).")
+      .def(
           "constraint_error",
           [](const Batch& batch, std::int64_t world, std::int64_t constraint) {
             return batch.ConstraintError(

@@ -75,6 +75,9 @@ void BindSceneCatalogue(py::module_& m) {
   m.def(
       "scene_step_settings", [](const std::string& id) { return SceneStepSettings(id); },
       py::arg("id"), "The StepSettings scene `id` is meant to be stepped with.");
+  m.def(
+      "scene_description", [](const std::string& id) { return SceneDescription(id); },
+      py::arg("id"), "What scene `id` is and what it tests, one line (as `manyworlds scenes`).");
 
   py::class_<MassRaise>(m, "MassRaise", "A body whose mass limit_mass_range raised.")
       .def_readonly("body", &MassRaise::body)

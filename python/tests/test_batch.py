@@ -280,6 +280,9 @@ def test_constraint_errors(cartpole):
     errors = cartpole.max_constraint_errors()
     assert errors.shape == (WORLDS,) and errors.dtype == np.float32
     assert errors[5] == np.float32(cartpole.max_constraint_error(5))
+    linear, angular = cartpole.max_constraint_error_split(5)
+    assert linear >= 0 and angular >= 0
+    assert np.float32(max(linear, angular)) == errors[5]
     assert cartpole.constraint_error(5, 1) >= 0 and cartpole.constraint_velocity_error(5, 1) >= 0
 
 

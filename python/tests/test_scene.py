@@ -183,6 +183,11 @@ def test_scene_catalogue():
     assert mw.scene_step_settings("cartpole") == mw.StepSettings()
     with pytest.raises(ValueError, match="valid ids"):
         mw.make_scene("no-such-scene")
+    descriptions = [mw.scene_description(scene_id) for scene_id in mw.all_scene_ids()]
+    assert all(d and "\n" not in d for d in descriptions)
+    assert len(set(descriptions)) == len(descriptions), "two scenes described alike"
+    with pytest.raises(ValueError, match="valid ids"):
+        mw.scene_description("no-such-scene")
 
 
 def test_scene_actions_are_the_cartpole_forces():
