@@ -4,6 +4,7 @@
 //   manyworlds run --scene cartpole --worlds 4096 --steps 1000 [--threads N]
 //                  [--substeps N] [--velocity-iterations N] [--position-iterations N]
 //                  [--warmup N] [--seed N] [--mass-range-limit R]
+//                  [--record FILE [--record-worlds 0,1,7]]
 //   manyworlds plan --scene ID
 //   manyworlds scenes
 //   manyworlds sweep [--scenes A,B] [--worlds N] [--seconds S] [--small] ... (tools/sweep.h)
@@ -28,6 +29,7 @@
 #include "manyworlds/scene.h"
 #include "manyworlds/scenes.h"
 #include "tools/options.h"
+#include "tools/record_option.h"
 #include "tools/sweep.h"
 
 namespace {
@@ -40,13 +42,15 @@ constexpr const char* kUsage =
     "usage:\n"
     "  manyworlds run --scene ID [--worlds N] [--steps N] [--threads N] [--substeps N]\n"
     "                 [--velocity-iterations N] [--position-iterations N] [--warmup N]\n"
-    "                 [--seed N] [--mass-range-limit R]\n"
+    "                 [--seed N] [--mass-range-limit R] [--record FILE [--record-worlds LIST]]\n"
     "      steps N worlds of a reference or stress scene and reports throughput and constraint\n"
     "      error (defaults: 4096 worlds, 1000 timed steps after 20 warm-up steps,\n"
     "      threads 0 = every core, 1 substep, 10 velocity and 2 position iterations,\n"
     "      seed 1 for the actions; --mass-range-limit R >= 1 first raises every body\n"
     "      lighter than 1/R of the heaviest body joined to it through dynamic\n"
-    "      bodies, LimitMassRange, docs/stability.md; 0 = off, the default)\n"
+    "      bodies, LimitMassRange, docs/stability.md; 0 = off, the default;\n"
+    "      --record FILE writes worlds LIST (default 0) every step to the NPZ file\n"
+    "      FILE, which must not exist, docs/recording.md)\n"
     "  manyworlds plan --scene ID     prints what one step of the scene runs\n"
     "  manyworlds scenes              lists the reference and stress scene ids\n"
     "  manyworlds sweep [--scenes A,B] [--worlds N] [--seconds S] [--threads N]\n"
@@ -117,7 +121,8 @@ int Run(int argc, char** argv) {
   const Options options(argc, argv,
                         {"--scene", "--worlds", "--steps", "--threads", "--substeps",
                          "--velocity-iterations", "--position-iterations", "--warmup",
-                         "--seed", "--mass-range-limit"});
+                         "--seed", "--mass-range-limit", tools::kRecordOption,
+                         tools::kRecordWorldsOption});
   const std::string id = options.Text("--scene");
   Scene scene = SceneOf(options);
   const std::string mass_range = MassRangeLimitOf(options, scene);
@@ -136,18 +141,23 @@ int Run(int argc, char** argv) {
 
   Batch batch(scene, worlds, batch_options);
   const SceneActions actions(id);
+  tools::RunRecording recording(options, batch, id, settings.delta_time);
   std::uint64_t step = 0;
+  recording.Capture(batch, step);
   for (; step < warmup; ++step) {
     actions.Apply(batch, step, seed);
     batch.Step(settings);
+    recording.Capture(batch, step + 1);
   }
   const auto start = std::chrono::steady_clock::now();
   for (; step < warmup + steps; ++step) {
     actions.Apply(batch, step, seed);
     batch.Step(settings);
+    recording.Capture(batch, step + 1);
   }
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  recording.Close();
 
   // Accuracy and health after the last step.
   float max_error = 0.0f;
@@ -189,6 +199,7 @@ int Run(int argc, char** argv) {
           ? "every step (cart force along X, uniform [-10, 10] N)"
           : "every step (elbow and knee position targets, uniform in their limits)";
   std::printf("actions:              %s\n", action_text);
+  std::printf("recording:            %s\n", recording.Describe().c_str());
   std::printf("timed:                %llu steps after %llu warm-up steps, %.3f s wall\n",
               static_cast<unsigned long long>(steps), static_cast<unsigned long long>(warmup),
               seconds);
