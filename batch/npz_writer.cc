@@ -382,6 +382,10 @@ void StreamingNpzWriter::Close() {
   if (::close(fd) != 0) ThrowErrno("cannot close", s.path);
 }
 
+void StreamingNpzWriter::Discard() {
+  if (!state_->closed) state_->Discard();
+}
+
 bool StreamingNpzWriter::closed() const { return state_->closed; }
 const std::string& StreamingNpzWriter::path() const { return state_->path; }
 

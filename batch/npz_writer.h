@@ -60,6 +60,8 @@ class StreamingNpzWriter {
   // Writes the ZIP and renames it to `path`. After an exception the
   // temporary file is gone and the writer is closed.
   void Close();
+  // Removes the temporary file without writing `path`; the writer is closed.
+  void Discard();
   bool closed() const;
   const std::string& path() const;
 

@@ -281,6 +281,10 @@ void Recorder::Close() {
   state_->writer.Close();
 }
 
+void Recorder::Discard() {
+  if (state_ && !state_->writer.closed()) state_->writer.Discard();
+}
+
 bool Recorder::closed() const { return !state_ || state_->writer.closed(); }
 std::size_t Recorder::frame_count() const { return state_ ? state_->frames : 0; }
 const std::string& Recorder::path() const {

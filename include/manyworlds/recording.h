@@ -58,6 +58,8 @@ class Recorder {
 
   // Writes the file. Capture and Close throw std::logic_error afterwards.
   void Close();
+  // Gives up: removes the partial file now (as destruction does) and closes.
+  void Discard();
   bool closed() const;
   std::size_t frame_count() const;
   const std::string& path() const;
