@@ -87,15 +87,17 @@ var ManyworldsRecording = (function () {
     var a = this.arrays.constraint_anchor.data, i = (2 * c + side) * 3;
     return [a[i], a[i + 1], a[i + 2]];
   };
-  // The last frame at or before `seconds` (the first frame before it).
+  // The frame nearest to `seconds` (recorded times are float sums, so
+  // "1 s" may be stored as 1.0000001).
   Recording.prototype.frameAt = function (seconds) {
     var low = 0, high = this.frames - 1;
     if (!(seconds >= this.time[0])) return 0;
-    while (low < high) {
+    while (low < high) {  // the last frame at or before `seconds`
       var middle = (low + high + 1) >> 1;
       if (this.time[middle] <= seconds) low = middle; else high = middle - 1;
     }
-    return low;
+    var next = Math.min(low + 1, this.frames - 1);
+    return this.time[next] - seconds < seconds - this.time[low] ? next : low;
   };
   Recording.prototype.duration = function () {
     return this.time[this.frames - 1] - this.time[0];

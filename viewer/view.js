@@ -1,8 +1,8 @@
 // The 3D view of a recording (three.js r111, Debian's libjs-three): one mesh
 // per body and world, joints as lines from each body's centre of mass to the
 // anchor, worlds side by side (offset along X) or overlaid (tinted per
-// world), a ground grid under the lowest body of frame 0, and a camera that
-// frames frame 0 and then stays put, so motion shows as motion.
+// world), a ground grid under the lowest body, and a camera that frames
+// the whole recording and then stays put, so motion shows as motion.
 "use strict";
 
 var ManyworldsView = (function () {
@@ -57,17 +57,23 @@ var ManyworldsView = (function () {
                                             recording.isStatic(b)));
       radius.push(ManyworldsShapes.boundingRadius(shapes[b]));
     }
-    // Frame 0's extent of one world: the spacing of side-by-side worlds.
+    // Where one world's bodies go over the whole recording (about 100
+    // frames sampled): the spacing of side-by-side worlds and the camera's
+    // frame, so nothing leaves the view while it plays.
     var low = [Infinity, Infinity, Infinity], high = [-Infinity, -Infinity, -Infinity];
-    slots.forEach(function (w) {
-      for (var b = 0; b < recording.bodies; b++) {
-        var p = recording.position(0, w, b);
-        for (var k = 0; k < 3; k++) {
-          low[k] = Math.min(low[k], p[k] - radius[b]);
-          high[k] = Math.max(high[k], p[k] + radius[b]);
+    var stride = Math.max(1, Math.floor(recording.frames / 100));
+    for (var t = 0; t < recording.frames; t += stride) {
+      slots.forEach(function (w) {
+        for (var b = 0; b < recording.bodies; b++) {
+          var p = recording.position(t, w, b);
+          if (!isFinite(p[0] + p[1] + p[2])) continue;  // an unhealthy world's NaNs
+          for (var k = 0; k < 3; k++) {
+            low[k] = Math.min(low[k], p[k] - radius[b]);
+            high[k] = Math.max(high[k], p[k] + radius[b]);
+          }
         }
-      }
-    });
+      });
+    }
     var overlay = layout === "overlay" || slots.length === 1;
     var spacing = 1.25 * (high[0] - low[0]) + 0.2;
     this.offsets = slots.map(function (w, i) { return overlay ? 0 : (i - (slots.length - 1) / 2) * spacing; });
