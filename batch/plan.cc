@@ -14,8 +14,6 @@
 #include "manyworlds/lanes.h"
 
 namespace manyworlds {
-namespace {
-
 const char* SettingsTypeName(const ConstraintSettings& settings) {
   return std::visit(
       [](const auto& s) -> const char* {
@@ -36,6 +34,8 @@ const char* SettingsTypeName(const ConstraintSettings& settings) {
       },
       settings);
 }
+
+namespace {
 
 // Bump allocator over one block; every struct is a whole number of LaneArrays.
 class BlockLayout {

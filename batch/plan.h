@@ -40,6 +40,8 @@ enum class ConstraintType : std::uint8_t {
   kPath,
 };
 const char* ConstraintTypeName(ConstraintType type);
+// The same names from a scene's settings ("hinge", "swing_twist", ...).
+const char* SettingsTypeName(const ConstraintSettings& settings);
 
 // How a hinge or slider drives its free axis (from motor state and friction).
 enum class DriveKind : std::uint8_t {

@@ -26,6 +26,7 @@ void BindSettings(py::module_& m);     // bind_settings.cc: enums, bodies, motor
 void BindConstraints(py::module_& m);  // bind_constraints.cc: every constraint type
 void BindScene(py::module_& m);        // bind_scene.cc: Scene, reference scenes
 void BindBatch(py::module_& m);        // bind_batch.cc: Batch
+void BindRecording(py::module_& m);    // bind_recording.cc: Recorder
 // bind_batch_parameters.cc: Batch's per-world parameters (masses, limits...).
 void BindParameters(py::class_<Batch>& cls);
 

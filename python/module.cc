@@ -23,4 +23,5 @@ PYBIND11_MODULE(_core, m) {
   mw::BindConstraints(m);
   mw::BindScene(m);
   mw::BindBatch(m);
+  mw::BindRecording(m);
 }

@@ -6,6 +6,7 @@
 //   manyworlds run --scene cartpole --worlds 4096 --steps 1000 [--threads N]
 //                  [--substeps N] [--velocity-iterations N] [--position-iterations N]
 //                  [--warmup N] [--seed N] [--mass-range-limit R]
+//                  [--record FILE [--record-worlds 0,1,7]]
 //   manyworlds plan --scene ID
 //   manyworlds scenes
 //   manyworlds sweep [--scenes A,B] [--worlds N] [--seconds S] [--small] ... (tools/sweep.h)
@@ -31,6 +32,7 @@
 #include "manyworlds/scenes.h"
 #include "tools/options.h"
 #include "tools/progress.h"
+#include "tools/record_option.h"
 #include "tools/run_report.h"
 #include "tools/sweep.h"
 
@@ -44,7 +46,7 @@ constexpr const char* kUsage =
     "usage:\n"
     "  manyworlds run --scene ID [--worlds N] [--steps N] [--threads N] [--substeps N]\n"
     "                 [--velocity-iterations N] [--position-iterations N] [--warmup N]\n"
-    "                 [--seed N] [--mass-range-limit R]\n"
+    "                 [--seed N] [--mass-range-limit R] [--record FILE [--record-worlds LIST]]\n"
     "      steps N worlds of a reference or stress scene and reports throughput and constraint\n"
     "      error (defaults: 4096 worlds, 1000 timed steps after 20 warm-up steps,\n"
     "      threads 0 = every core, 1 substep, 10 velocity and 2 position iterations,\n"
@@ -54,7 +56,9 @@ constexpr const char* kUsage =
     "      Constraint errors after the last step, linear (m) and angular (rad) apart,\n"
     "      max and mean over worlds. On a terminal a progress line shows the steps\n"
     "      done, world-steps/s and the time left; Ctrl-C stops at the next step,\n"
-    "      reports the steps done and exits with 130 (a second Ctrl-C kills)\n"
+    "      reports the steps done and exits with 130 (a second Ctrl-C kills);\n"
+    "      --record FILE writes worlds LIST (default 0) every step to the NPZ file\n"
+    "      FILE, which must not exist, docs/recording.md)\n"
     "  manyworlds plan --scene ID     prints what one step of the scene runs\n"
     "  manyworlds scenes              lists every scene id: bodies, constraints and\n"
     "                                 what it tests\n"
@@ -138,7 +142,8 @@ int Run(int argc, char** argv) {
   const Options options(argc, argv,
                         {"--scene", "--worlds", "--steps", "--threads", "--substeps",
                          "--velocity-iterations", "--position-iterations", "--warmup",
-                         "--seed", "--mass-range-limit"});
+                         "--seed", "--mass-range-limit", tools::kRecordOption,
+                         tools::kRecordWorldsOption});
   Scene scene = SceneOf(options);
   const std::string id = options.Text("--scene");
   const std::string mass_range = MassRangeLimitOf(options, scene);
@@ -157,25 +162,30 @@ int Run(int argc, char** argv) {
 
   Batch batch(scene, worlds, batch_options);
   const SceneActions actions(id);
+  tools::RunRecording recording(options, batch, id, settings.delta_time);
   // Ctrl-C stops at the next step boundary and still reports; on a terminal
   // a progress line shows how far the run is (tools/progress.h).
   const tools::SigintStop sigint;
   tools::ProgressLine progress(warmup + steps, worlds);
   std::uint64_t step = 0;
+  recording.Capture(batch, step);
   for (; step < warmup && !sigint.requested(); ++step) {
     actions.Apply(batch, step, seed);
     batch.Step(settings);
+    recording.Capture(batch, step + 1);
     progress.Update(step + 1);
   }
   const auto start = std::chrono::steady_clock::now();
   for (; step < warmup + steps && !sigint.requested(); ++step) {
     actions.Apply(batch, step, seed);
     batch.Step(settings);
+    recording.Capture(batch, step + 1);
     progress.Update(step + 1);
   }
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   progress.Erase();
+  recording.Close();
   // A SIGINT after the last step changes nothing: the run is complete.
   const bool interrupted = step < warmup + steps;
   tools::PrintRunReport(batch, actions,
@@ -186,7 +196,8 @@ int Run(int argc, char** argv) {
                          .timed_steps = steps,
                          .steps_done = step,
                          .timed_seconds = seconds,
-                         .interrupted = interrupted});
+                         .interrupted = interrupted,
+                         .recording = recording.Describe()});
   if (!interrupted) return 0;
   std::fprintf(stderr, "manyworlds: interrupted by SIGINT after step %llu of %llu; the report "
                        "covers the steps done\n",

@@ -73,6 +73,7 @@ void PrintRunReport(const Batch& batch, const SceneActions& actions, const RunFa
           ? "every step (cart force along X, uniform [-10, 10] N)"
           : "every step (elbow and knee position targets, uniform in their limits)";
   std::printf("actions:              %s\n", action_text);
+  std::printf("recording:            %s\n", facts.recording.c_str());
   if (!facts.interrupted) {
     std::printf("timed:                %llu steps after %llu warm-up steps, %.3f s wall\n",
                 Ull(facts.timed_steps), Ull(facts.warmup_steps), facts.timed_seconds);

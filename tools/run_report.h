@@ -21,6 +21,7 @@ struct RunFacts {
   std::uint64_t steps_done = 0;    // warm-up and timed steps actually done
   double timed_seconds = 0.0;      // wall time of the timed steps done
   bool interrupted = false;        // SIGINT stopped the run before the end
+  std::string recording = "off";   // what --record wrote (tools/record_option.h)
 };
 
 // Prints the report to stdout, from `batch` as the last step left it.

@@ -29,6 +29,7 @@ import numpy as _np
 from . import _core
 from ._core import *  # noqa: F401,F403  (the whole C++ API)
 from ._core import __version__  # noqa: F401
+from .recording import Recorder, Recording, load_recording  # noqa: F401  (after _core's)
 
 # The snapshot type also under the C++ name.
 BatchSnapshot = _core.Batch.Snapshot

@@ -1,0 +1,295 @@
+// Recorder (include/manyworlds/recording.h): the scene's description as
+// whole arrays, the frames as growing arrays of batch/npz_writer.h. The
+// arrays and their meaning are documented in docs/recording.md.
+
+#include "manyworlds/recording.h"
+
+#include <algorithm>
+#include <array>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <variant>
+#include <vector>
+
+#include "batch/npz_writer.h"
+#include "batch/plan.h"
+
+namespace manyworlds {
+namespace {
+
+using Vec3 = std::array<double, 3>;
+
+// q^-1 v q for a unit quaternion (x, y, z, w): a world vector in the body frame.
+Vec3 RotateInverse(const Quaternion& q, const Vec3& v) {
+  const double x = -q[0], y = -q[1], z = -q[2], w = q[3];
+  // t = 2 (q.xyz x v); v' = v + w t + q.xyz x t
+  const Vec3 t{2 * (y * v[2] - z * v[1]), 2 * (z * v[0] - x * v[2]), 2 * (x * v[1] - y * v[0])};
+  return {v[0] + w * t[0] + (y * t[2] - z * t[1]), v[1] + w * t[1] + (z * t[0] - x * t[2]),
+          v[2] + w * t[2] + (x * t[1] - y * t[0])};
+}
+
+// A world-space point at the scene's initial pose, in the body's COM frame.
+Vec3 LocalPoint(const BodySettings& body, const Float3& p) {
+  return RotateInverse(body.rotation, {double(p[0]) - body.position[0],
+                                       double(p[1]) - body.position[1],
+                                       double(p[2]) - body.position[2]});
+}
+
+Float3 FromWorld(const Scene& scene, std::size_t body, const Vec3& world) {
+  const Vec3 local = LocalPoint(scene.bodies()[body],
+                                {float(world[0]), float(world[1]), float(world[2])});
+  return {float(local[0]), float(local[1]), float(local[2])};
+}
+
+// Jolt's auto-detected anchor: the inverse-mass-weighted average of the two
+// centres of mass (a static body's inverse mass is 0).
+Vec3 AutoDetectedPoint(const BodySettings& a, const BodySettings& b) {
+  const double wa = a.motion_type == MotionType::kDynamic ? 1.0 / a.mass : 0.0;
+  const double wb = b.motion_type == MotionType::kDynamic ? 1.0 / b.mass : 0.0;
+  if (wa + wb == 0.0) return {a.position[0], a.position[1], a.position[2]};
+  Vec3 p;
+  for (int i = 0; i < 3; ++i) p[i] = (wa * a.position[i] + wb * b.position[i]) / (wa + wb);
+  return p;
+}
+
+// The constraint's anchor in body 1's and body 2's COM frames: where the
+// viewer draws the joint's two lines to. Gears and racks have none (the
+// centres of mass); a path's is the path origin on body 1 and body 2's COM.
+std::array<Float3, 2> Anchors(const Scene& scene, const ConstraintSettings& settings) {
+  return std::visit(
+      [&scene](const auto& s) -> std::array<Float3, 2> {
+        using S = std::decay_t<decltype(s)>;
+        const bool world = s.space == ConstraintSpace::kWorldSpace;
+        const auto pair = [&](const Float3& p1, const Float3& p2) -> std::array<Float3, 2> {
+          if (!world) return {p1, p2};
+          const Vec3 w1{p1[0], p1[1], p1[2]}, w2{p2[0], p2[1], p2[2]};
+          return {FromWorld(scene, s.body1, w1), FromWorld(scene, s.body2, w2)};
+        };
+        if constexpr (std::is_same_v<S, GearConstraintSettings> ||
+                      std::is_same_v<S, RackAndPinionConstraintSettings>) {
+          return {};
+        } else if constexpr (std::is_same_v<S, PathConstraintSettings>) {
+          if (!world) return {s.path_position, Float3{}};
+          return {FromWorld(scene, s.body1, {s.path_position[0], s.path_position[1],
+                                             s.path_position[2]}),
+                  Float3{}};
+        } else if constexpr (std::is_same_v<S, PulleyConstraintSettings>) {
+          return pair(s.body_point1, s.body_point2);
+        } else if constexpr (std::is_same_v<S, SixDofConstraintSettings>) {
+          return pair(s.position1, s.position2);
+        } else {
+          if constexpr (std::is_same_v<S, FixedConstraintSettings> ||
+                        std::is_same_v<S, SliderConstraintSettings>) {
+            if (s.auto_detect_point) {
+              const Vec3 p = AutoDetectedPoint(scene.bodies()[s.body1], scene.bodies()[s.body2]);
+              return {FromWorld(scene, s.body1, p), FromWorld(scene, s.body2, p)};
+            }
+          }
+          return pair(s.point1, s.point2);
+        }
+      },
+      settings);
+}
+
+template <class T>
+std::span<const std::byte> Bytes(const std::vector<T>& values) {
+  return std::as_bytes(std::span(values));
+}
+
+std::vector<std::uint64_t> Shape(std::initializer_list<std::size_t> dims) {
+  return std::vector<std::uint64_t>(dims.begin(), dims.end());
+}
+
+// numpy's '<U' array of `texts`: UTF-32LE items as wide as the longest (at
+// least 1, as numpy makes an array of empty strings).
+void AddTextArray(npz::StreamingNpzWriter& writer, const std::string& name,
+                  const std::vector<std::string>& texts, std::vector<std::uint64_t> shape) {
+  std::vector<std::vector<std::uint32_t>> codes;
+  std::size_t width = 1;
+  for (const std::string& text : texts) {
+    codes.push_back(npz::Utf32(text));
+    width = std::max(width, codes.back().size());
+  }
+  std::vector<std::uint32_t> items(codes.size() * width, 0);
+  for (std::size_t i = 0; i < codes.size(); ++i) {
+    std::copy(codes[i].begin(), codes[i].end(), items.begin() + std::ptrdiff_t(i * width));
+  }
+  writer.AddArray(name, "<U" + std::to_string(width), std::move(shape), Bytes(items));
+}
+
+std::vector<std::size_t> CheckedWorlds(const Batch& batch, std::span<const std::size_t> worlds) {
+  if (worlds.empty()) throw std::invalid_argument("no world to record");
+  std::vector<std::size_t> sorted(worlds.begin(), worlds.end());
+  for (const std::size_t w : worlds) {
+    if (w >= batch.world_count()) {
+      throw std::invalid_argument("world " + std::to_string(w) + " out of range [0, " +
+                                  std::to_string(batch.world_count()) + ")");
+    }
+  }
+  std::sort(sorted.begin(), sorted.end());
+  const auto repeated = std::adjacent_find(sorted.begin(), sorted.end());
+  if (repeated != sorted.end()) {
+    throw std::invalid_argument("world " + std::to_string(*repeated) + " given twice");
+  }
+  return {worlds.begin(), worlds.end()};
+}
+
+}  // namespace
+
+struct Recorder::State {
+  npz::StreamingNpzWriter writer;
+  std::vector<std::size_t> worlds;
+  std::size_t bodies = 0, constraints = 0, coordinates = 0;
+  std::size_t time_array = 0, step_array = 0, position_array = 0, rotation_array = 0,
+              coordinate_array = 0, health_array = 0;
+  std::size_t frames = 0;
+  // Reused between frames: the whole batch's read-outs and one frame's rows.
+  std::vector<float> state, all_coordinates, positions, rotations, coordinate_rows;
+  std::vector<std::uint8_t> health;
+
+  State(const std::string& path, const RecorderOptions& options)
+      : writer(path, options.overwrite,
+               options.force_zip64 ? npz::Zip64::kAlways : npz::Zip64::kWhenNeeded) {}
+};
+
+Recorder::Recorder(const Batch& batch, const std::string& path,
+                   std::span<const std::size_t> worlds, const RecorderOptions& options) {
+  std::vector<std::size_t> checked = CheckedWorlds(batch, worlds);
+  state_ = std::make_unique<State>(path, options);
+  State& s = *state_;
+  npz::StreamingNpzWriter& w = s.writer;
+  const Scene& scene = batch.scene();
+  s.worlds = std::move(checked);
+  s.bodies = batch.body_count();
+  s.constraints = batch.constraint_count();
+  s.coordinates = batch.JointCoordinatesPerWorld();
+  const std::size_t W = s.worlds.size(), B = s.bodies, C = s.constraints, J = s.coordinates;
+
+  w.AddArray("format_version", "<i4", Shape({1}),
+             Bytes(std::vector<std::int32_t>{kRecordingFormatVersion}));
+  AddTextArray(w, "scene", {options.scene}, {});
+  w.AddArray("world", "<i8", Shape({W}),
+             Bytes(std::vector<std::int64_t>(s.worlds.begin(), s.worlds.end())));
+
+  std::vector<std::string> body_names;
+  std::vector<std::uint8_t> motion_types;
+  std::vector<float> masses, inertia_diagonals, inertia_rotations;
+  for (const BodySettings& body : scene.bodies()) {
+    body_names.push_back(body.name);
+    motion_types.push_back(static_cast<std::uint8_t>(body.motion_type));
+    masses.push_back(body.mass);
+    inertia_diagonals.insert(inertia_diagonals.end(), body.inertia_diagonal.begin(),
+                             body.inertia_diagonal.end());
+    inertia_rotations.insert(inertia_rotations.end(), body.inertia_rotation.begin(),
+                             body.inertia_rotation.end());
+  }
+  AddTextArray(w, "body_name", body_names, Shape({B}));
+  w.AddArray("body_motion_type", "|u1", Shape({B}), Bytes(motion_types));
+  w.AddArray("body_mass", "<f4", Shape({B}), Bytes(masses));
+  w.AddArray("body_inertia_diagonal", "<f4", Shape({B, 3}), Bytes(inertia_diagonals));
+  w.AddArray("body_inertia_rotation", "<f4", Shape({B, 4}), Bytes(inertia_rotations));
+
+  std::vector<std::string> names, types, coordinate_names;
+  std::vector<std::int32_t> constraint_bodies, coordinate_constraints;
+  std::vector<float> anchors;
+  for (std::size_t c = 0; c < C; ++c) {
+    const ConstraintSettings& settings = scene.constraints()[c];
+    std::visit(
+        [&](const auto& cs) {
+          names.push_back(cs.name);
+          constraint_bodies.push_back(std::int32_t(cs.body1));
+          constraint_bodies.push_back(std::int32_t(cs.body2));
+        },
+        settings);
+    types.push_back(SettingsTypeName(settings));
+    for (const Float3& anchor : Anchors(scene, settings)) {
+      anchors.insert(anchors.end(), anchor.begin(), anchor.end());
+    }
+    for (const std::string& coordinate : batch.JointCoordinateNames(c)) {
+      coordinate_names.push_back((names.back().empty() ? types.back() + std::to_string(c)
+                                                       : names.back()) +
+                                 "/" + coordinate);
+      coordinate_constraints.push_back(std::int32_t(c));
+    }
+  }
+  AddTextArray(w, "constraint_name", names, Shape({C}));
+  AddTextArray(w, "constraint_type", types, Shape({C}));
+  w.AddArray("constraint_body", "<i4", Shape({C, 2}), Bytes(constraint_bodies));
+  w.AddArray("constraint_anchor", "<f4", Shape({C, 2, 3}), Bytes(anchors));
+  AddTextArray(w, "joint_coordinate_name", coordinate_names, Shape({J}));
+  w.AddArray("joint_coordinate_constraint", "<i4", Shape({J}), Bytes(coordinate_constraints));
+
+  s.time_array = w.AddGrowingArray("time", "<f8", 8, {});
+  s.step_array = w.AddGrowingArray("step", "<i8", 8, {});
+  s.position_array = w.AddGrowingArray("position", "<f4", 4, Shape({W, B, 3}));
+  s.rotation_array = w.AddGrowingArray("rotation", "<f4", 4, Shape({W, B, 4}));
+  s.coordinate_array = w.AddGrowingArray("joint_coordinates", "<f4", 4, Shape({W, J}));
+  s.health_array = w.AddGrowingArray("health", "|u1", 1, Shape({W}));
+}
+
+Recorder::~Recorder() = default;
+Recorder::Recorder(Recorder&&) noexcept = default;
+Recorder& Recorder::operator=(Recorder&&) noexcept = default;
+
+void Recorder::Capture(const Batch& batch, double time, std::int64_t step) {
+  if (!state_ || state_->writer.closed()) throw std::logic_error("Recorder: Capture after Close");
+  State& s = *state_;
+  if (batch.body_count() != s.bodies || batch.constraint_count() != s.constraints ||
+      batch.JointCoordinatesPerWorld() != s.coordinates ||
+      batch.world_count() <= *std::max_element(s.worlds.begin(), s.worlds.end())) {
+    throw std::invalid_argument(
+        "Recorder::Capture: the batch is not the recorded scene's (bodies, constraints, joint "
+        "coordinates or world count differ)");
+  }
+  const std::size_t B = s.bodies, J = s.coordinates;
+  s.state.resize(batch.world_count() * B * kStateFloatsPerBody);
+  s.all_coordinates.resize(batch.world_count() * J);
+  batch.GetState(s.state);
+  batch.GetJointCoordinates(s.all_coordinates);
+  const std::span<const std::uint8_t> health = batch.WorldHealth();
+  s.positions.clear();
+  s.rotations.clear();
+  s.coordinate_rows.clear();
+  s.health.clear();
+  for (const std::size_t world : s.worlds) {
+    for (std::size_t b = 0; b < B; ++b) {
+      const float* body = s.state.data() + (world * B + b) * kStateFloatsPerBody;
+      const float* position = body + StateFieldOffset(StateField::kPosition);
+      const float* rotation = body + StateFieldOffset(StateField::kRotation);
+      s.positions.insert(s.positions.end(), position, position + 3);
+      s.rotations.insert(s.rotations.end(), rotation, rotation + 4);
+    }
+    const float* coordinates = s.all_coordinates.data() + world * J;
+    s.coordinate_rows.insert(s.coordinate_rows.end(), coordinates, coordinates + J);
+    s.health.push_back(health.empty() ? 0 : health[world]);
+  }
+  npz::StreamingNpzWriter& w = s.writer;
+  w.Append(s.time_array, std::as_bytes(std::span(&time, 1)));
+  w.Append(s.step_array, std::as_bytes(std::span(&step, 1)));
+  w.Append(s.position_array, Bytes(s.positions));
+  w.Append(s.rotation_array, Bytes(s.rotations));
+  w.Append(s.coordinate_array, Bytes(s.coordinate_rows));
+  w.Append(s.health_array, Bytes(s.health));
+  ++s.frames;
+}
+
+void Recorder::Close() {
+  if (!state_ || state_->writer.closed()) throw std::logic_error("Recorder: Close called twice");
+  state_->writer.Close();
+}
+
+void Recorder::Discard() {
+  if (state_ && !state_->writer.closed()) state_->writer.Discard();
+}
+
+bool Recorder::closed() const { return !state_ || state_->writer.closed(); }
+std::size_t Recorder::frame_count() const { return state_ ? state_->frames : 0; }
+const std::string& Recorder::path() const {
+  if (!state_) throw std::logic_error("Recorder: moved from");
+  return state_->writer.path();
+}
+
+}  // namespace manyworlds
