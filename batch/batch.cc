@@ -123,7 +123,7 @@ Batch::Impl::Impl(const Scene& scene, std::size_t world_count, BatchOptions opti
   }
 }
 
-void Batch::Impl::Step(const StepSettings& settings, std::stop_token stop) {
+void Batch::Impl::Step(const StepSettings& settings, std::stop_token stop, const BlockIo* io) {
   CheckStepSettings(settings);
   const float substep_dt = settings.delta_time / static_cast<float>(settings.substeps);
   StepParams params{};
@@ -151,10 +151,12 @@ void Batch::Impl::Step(const StepSettings& settings, std::stop_token stop) {
         for (auto [world, end] = WorldsOf(block); world < end; ++world) {
           health_[world] = kNotStepped;
         }
+        if (io != nullptr) FinishBlock(block, *io, false);
         continue;
       }
       const bool unhealthy = kernels_->step_block(plan_, Block(block), params);
       RecordHealth(block, unhealthy, reset_unhealthy);
+      if (io != nullptr) FinishBlock(block, *io, true);
     }
   };
   if (threads_ == 1 || block_count_ == 1) {
@@ -278,26 +280,31 @@ namespace {
 // Step (110 us of 680), this way 50 us on one thread; GetField of positions
 // 140 us, now 17.
 template <std::size_t kCount>
-void ReadStateColumns(const Batch::Impl& batch, std::size_t first, float* out) {
+void ReadStateColumnsOfBlock(const Batch::Impl& batch, std::size_t block, std::size_t first,
+                             float* out) {
   const std::size_t bodies = batch.plan_.bodies.size();
-  batch.ForEachBlock([&](std::size_t block) {
-    const auto [block_first, block_end] = batch.WorldsOf(block);
-    const std::size_t lanes = block_end - block_first;
-    for (std::size_t b = 0; b < bodies; ++b) {
-      const BodyLanes& body = batch.In<BodyLanes>(block_first, batch.plan_.bodies[b].offset);
-      const LaneArray* const row[kStateFloatsPerBody] = {
-          &body.position.x,         &body.position.y,         &body.position.z,
-          &body.rotation.x,         &body.rotation.y,         &body.rotation.z,
-          &body.rotation.w,         &body.linear_velocity.x,  &body.linear_velocity.y,
-          &body.linear_velocity.z,  &body.angular_velocity.x, &body.angular_velocity.y,
-          &body.angular_velocity.z};
-      const LaneArray* const* columns = row + first;
-      for (std::size_t l = 0; l < lanes; ++l) {
-        float* values = out + ((block_first + l) * bodies + b) * kCount;
-        for (std::size_t c = 0; c < kCount; ++c) values[c] = columns[c]->lanes[l];
-      }
+  const auto [block_first, block_end] = batch.WorldsOf(block);
+  const std::size_t lanes = block_end - block_first;
+  for (std::size_t b = 0; b < bodies; ++b) {
+    const BodyLanes& body = batch.In<BodyLanes>(block_first, batch.plan_.bodies[b].offset);
+    const LaneArray* const row[kStateFloatsPerBody] = {
+        &body.position.x,         &body.position.y,         &body.position.z,
+        &body.rotation.x,         &body.rotation.y,         &body.rotation.z,
+        &body.rotation.w,         &body.linear_velocity.x,  &body.linear_velocity.y,
+        &body.linear_velocity.z,  &body.angular_velocity.x, &body.angular_velocity.y,
+        &body.angular_velocity.z};
+    const LaneArray* const* columns = row + first;
+    for (std::size_t l = 0; l < lanes; ++l) {
+      float* values = out + ((block_first + l) * bodies + b) * kCount;
+      for (std::size_t c = 0; c < kCount; ++c) values[c] = columns[c]->lanes[l];
     }
-  });
+  }
+}
+
+template <std::size_t kCount>
+void ReadStateColumns(const Batch::Impl& batch, std::size_t first, float* out) {
+  batch.ForEachBlock(
+      [&](std::size_t block) { ReadStateColumnsOfBlock<kCount>(batch, block, first, out); });
 }
 
 double RotationNorm(const float* state) {
@@ -307,6 +314,10 @@ double RotationNorm(const float* state) {
 }
 
 }  // namespace
+
+void Batch::Impl::ReadStateOfBlock(std::size_t block, float* out) const {
+  ReadStateColumnsOfBlock<kStateFloatsPerBody>(*this, block, 0, out);
+}
 
 void Batch::Impl::CheckStates(std::span<const float> in,
                               std::span<const std::uint8_t> mask) const {
@@ -390,15 +401,23 @@ void Batch::Impl::ResetWorld(std::size_t world) {
 // pending input are its block's alone): an RL loop resets done worlds every
 // step, each rewriting its lane of every array of its block, and with two
 // threads half of those blocks sit in the other core's cache after Step.
-void Batch::Impl::ResetWorlds(std::span<const std::uint8_t> mask) {
-  ForEachBlock([&](std::size_t block) {
-    for (auto [w, end] = WorldsOf(block); w < end; ++w) {
-      if (mask[w] == 0) continue;
-      ResetWorld(w);
-      health_[w] = 0;
-      pending_input_[w] = 0;
+void Batch::Impl::ResetWorlds(std::span<const std::uint8_t> mask,
+                              std::span<const float> states) {
+  ForEachBlock([&](std::size_t block) { ResetWorldsOfBlock(block, mask, states); });
+}
+
+void Batch::Impl::ResetWorldsOfBlock(std::size_t block, std::span<const std::uint8_t> mask,
+                                     std::span<const float> states) {
+  const std::size_t bodies = plan_.bodies.size();
+  for (auto [w, end] = WorldsOf(block); w < end; ++w) {
+    if (mask[w] == 0) continue;
+    ResetWorld(w);
+    for (std::size_t b = 0; b < bodies && !states.empty(); ++b) {
+      WriteState(w, b, states.data() + (w * bodies + b) * kStateFloatsPerBody);
     }
-  });
+    health_[w] = 0;
+    pending_input_[w] = 0;
+  }
 }
 
 // Swing-twist and six-DOF drives have one motor per axis; the single-value
@@ -476,8 +495,12 @@ bool Batch::Step(const StepSettings& settings, std::stop_token stop) {
   const Impl::Exclusive exclusive(batch, "Step");
   batch.Step(settings, stop);
   batch.last_settings_ = settings;
+  return batch.EveryWorldStepped(stop);
+}
+
+bool Batch::Impl::EveryWorldStepped(std::stop_token stop) const {
   return !stop.stop_requested() ||
-         std::none_of(batch.health_.begin(), batch.health_.end(),
+         std::none_of(health_.begin(), health_.end(),
                       [](std::uint8_t bits) { return (bits & kNotStepped) != 0; });
 }
 
@@ -548,8 +571,7 @@ void Batch::ResetTo(std::span<const std::uint8_t> world_mask, std::span<const fl
   batch.CheckSize(world_mask.size(), world_count(), "ResetTo mask");
   batch.CheckSize(state.size(), world_count() * body_count() * kStateFloatsPerBody, "ResetTo");
   batch.CheckStates(state, world_mask);
-  batch.ResetWorlds(world_mask);
-  batch.WriteStates(state, world_mask);
+  batch.ResetWorlds(world_mask, state);
 }
 
 void Batch::SetForce(std::size_t world, std::size_t body, Float3 force) {

@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "batch/batch_impl.h"
@@ -38,24 +37,33 @@ std::size_t Batch::JointCoordinatesPerWorld() const {
   return total;
 }
 
+std::vector<Batch::Impl::JointSlice> Batch::Impl::JointSlices() const {
+  std::vector<JointSlice> slices;
+  for (std::size_t c = 0, offset = 0; c < plan_.constraints.size(); ++c) {
+    const std::size_t count = manyworlds::JointCoordinateCount(plan_.constraints[c]);
+    if (count > 0) slices.push_back({c, offset});
+    offset += count;
+  }
+  return slices;
+}
+
+void Batch::Impl::ReadJointCoordinatesOfBlock(std::size_t block,
+                                              std::span<const JointSlice> slices,
+                                              std::size_t per_world, float* out) const {
+  for (auto [world, end] = WorldsOf(block); world < end; ++world) {
+    for (const auto& [c, offset] : slices) {
+      JointCoordinatesOfLane(plan_, Block(block), Lane(world), c, out + world * per_world + offset);
+    }
+  }
+}
+
 void Batch::GetJointCoordinates(std::span<float> out) const {
   const Impl& batch = impl();
   const std::size_t per_world = JointCoordinatesPerWorld();
   batch.CheckSize(out.size(), batch.world_count_ * per_world, "GetJointCoordinates");
-  // Only the constraints that have coordinates, with their offsets in a world's slice.
-  std::vector<std::pair<std::size_t, std::size_t>> read;
-  for (std::size_t c = 0, offset = 0; c < batch.plan_.constraints.size(); ++c) {
-    const std::size_t count = manyworlds::JointCoordinateCount(batch.plan_.constraints[c]);
-    if (count > 0) read.emplace_back(c, offset);
-    offset += count;
-  }
+  const std::vector<Impl::JointSlice> slices = batch.JointSlices();
   batch.ForEachBlock([&](std::size_t block) {
-    for (auto [world, end] = batch.WorldsOf(block); world < end; ++world) {
-      for (const auto& [c, offset] : read) {
-        JointCoordinatesOfLane(batch.plan_, batch.Block(block), Impl::Lane(world), c,
-                               out.data() + world * per_world + offset);
-      }
-    }
+    batch.ReadJointCoordinatesOfBlock(block, slices, per_world, out.data());
   });
 }
 

@@ -318,3 +318,51 @@ def test_step_releases_the_gil_and_concurrent_use_raises():
     assert refused is not None, "the step ended before the other thread could run"
     assert "thread" in str(refused)
     batch.get_state(out=out)  # fine again afterwards
+
+
+@pytest.mark.parametrize("threads", [1, 2])
+@pytest.mark.parametrize("with_states", [False, True])
+def test_fused_step_gives_the_bits_of_separate_calls(threads, with_states):
+    """step(reset_mask=, reset_states=, state_out=, joints_out=) equals step();
+    reset(mask) or reset_to(mask, states); get_state(); get_joint_coordinates()
+    bit for bit, step after step (1040 worlds: enough blocks for threads)."""
+    worlds = 1040
+    scene = mw.make_scene("cartpole")
+    separate = mw.Batch(scene, worlds, threads=threads)
+    fused = mw.Batch(scene, worlds, threads=threads)
+    rng = np.random.default_rng(5)
+    state_out = np.empty((worlds, 3, 13), np.float32)
+    joints_out = np.empty((worlds, fused.joint_coordinates_per_world), np.float32)
+    for step in range(20):
+        forces = random_cart_forces(rng, worlds)
+        done = rng.random(worlds) < 0.1
+        states = separate.get_state()
+        states[:, :, 0] += np.float32(0.01)
+        for batch in (separate, fused):
+            batch.set_body_forces(CART, forces)
+        separate.step()
+        if with_states:
+            separate.reset_to(done, states)
+            fused.step(reset_mask=done, reset_states=states, state_out=state_out,
+                       joints_out=joints_out)
+        else:
+            separate.reset(done)
+            fused.step(reset_mask=done, state_out=state_out, joints_out=joints_out)
+        assert_same_bits(state_out, separate.get_state())
+        assert_same_bits(joints_out, separate.get_joint_coordinates())
+        np.testing.assert_array_equal(fused.health, separate.health)
+    assert fused.snapshot().bytes() == separate.snapshot().bytes()
+
+
+def test_fused_step_resets_after_the_step_for_autoreset(cartpole):
+    """The worlds in reset_mask are observed at their initial state (the new
+    episode's first observation), as Gymnasium's next-step autoreset wants."""
+    initial = cartpole.get_state()
+    for _ in range(5):
+        cartpole.step()
+    done = np.zeros(WORLDS, bool)
+    done[[3, 40]] = True
+    state_out = np.empty_like(initial)
+    cartpole.step(reset_mask=done, state_out=state_out)
+    assert_same_bits(state_out[done], initial[done])
+    assert not np.array_equal(bits(state_out[~done]), bits(initial[~done]))
