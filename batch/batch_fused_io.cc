@@ -20,7 +20,6 @@
 #include <stop_token>
 
 #include "batch/batch_impl.h"
-#include "batch/joint_coordinates.h"
 #include "manyworlds/batch.h"
 
 namespace manyworlds {
@@ -28,10 +27,7 @@ namespace manyworlds {
 Batch::Impl::BlockIo Batch::Impl::CheckedBlockIo(const StepIo& io) const {
   const std::size_t state_floats = world_count_ * plan_.bodies.size() * kStateFloatsPerBody;
   BlockIo checked;
-  checked.joint_slices = JointSlices();
-  for (const ConstraintPlan& c : plan_.constraints) {
-    checked.joints_per_world += manyworlds::JointCoordinateCount(c);
-  }
+  checked.joints = JointCoordinateLayout();
   if (!io.reset_mask.empty()) CheckSize(io.reset_mask.size(), world_count_, "Step reset_mask");
   if (!io.reset_states.empty()) {
     if (io.reset_mask.empty()) {
@@ -43,7 +39,7 @@ Batch::Impl::BlockIo Batch::Impl::CheckedBlockIo(const StepIo& io) const {
   }
   if (!io.state_out.empty()) CheckSize(io.state_out.size(), state_floats, "Step state_out");
   if (!io.joints_out.empty()) {
-    CheckSize(io.joints_out.size(), world_count_ * checked.joints_per_world, "Step joints_out");
+    CheckSize(io.joints_out.size(), world_count_ * checked.joints.per_world, "Step joints_out");
   }
   checked.reset_mask = io.reset_mask;
   checked.reset_states = io.reset_states;
@@ -57,9 +53,7 @@ Batch::Impl::BlockIo Batch::Impl::CheckedBlockIo(const StepIo& io) const {
 void Batch::Impl::FinishBlock(std::size_t block, const BlockIo& io, bool stepped) {
   if (stepped && !io.reset_mask.empty()) ResetWorldsOfBlock(block, io.reset_mask, io.reset_states);
   if (io.state_out != nullptr) ReadStateOfBlock(block, io.state_out);
-  if (io.joints_out != nullptr) {
-    ReadJointCoordinatesOfBlock(block, io.joint_slices, io.joints_per_world, io.joints_out);
-  }
+  if (io.joints_out != nullptr) ReadJointCoordinatesOfBlock(block, io.joints, io.joints_out);
 }
 
 bool Batch::Step(const StepSettings& settings, const StepIo& io, std::stop_token stop) {

@@ -76,16 +76,18 @@ class Batch::Impl {
   // ---- what a Step(settings, io) does per block besides stepping
   // (batch_fused_io.cc): the caller's StepIo, checked, with the joint
   // coordinates' layout worked out once per call.
-  struct JointSlice {
-    std::size_t constraint, offset;  // a constraint with coordinates, at offset in a world's row
+  // The constraints that have joint coordinates and their offsets in a
+  // world's row of per_world floats.
+  struct JointLayout {
+    std::vector<std::size_t> constraints, offsets;
+    std::size_t per_world = 0;
   };
   struct BlockIo {
     std::span<const std::uint8_t> reset_mask;
     std::span<const float> reset_states;
     float* state_out = nullptr;
     float* joints_out = nullptr;
-    std::vector<JointSlice> joint_slices;
-    std::size_t joints_per_world = 0;
+    JointLayout joints;
   };
   // Refuses (std::invalid_argument, by name) what Step(settings, io) must
   // not start with; writes nothing.
@@ -173,13 +175,13 @@ class Batch::Impl {
   void ResetWorldsOfBlock(std::size_t block, std::span<const std::uint8_t> mask,
                           std::span<const float> states);
 
-  // ---- observations of one block's real worlds (batch_joints.cc): every
-  // body's state into out[world][body][13], the joint coordinates of
-  // `slices` into out[world][per_world].
+  // ---- observations of one block's real worlds: every body's state into
+  // out[world][body][13] (batch.cc), the joint coordinates into
+  // out[world][layout.per_world] (batch_joints.cc).
   void ReadStateOfBlock(std::size_t block, float* out) const;
-  std::vector<JointSlice> JointSlices() const;
-  void ReadJointCoordinatesOfBlock(std::size_t block, std::span<const JointSlice> slices,
-                                   std::size_t per_world, float* out) const;
+  JointLayout JointCoordinateLayout() const;
+  void ReadJointCoordinatesOfBlock(std::size_t block, const JointLayout& layout,
+                                   float* out) const;
 
   // ---- per-constraint parameters
   static void RefuseMultiAxis(const ConstraintPlan& c, const char* what);

@@ -37,34 +37,31 @@ std::size_t Batch::JointCoordinatesPerWorld() const {
   return total;
 }
 
-std::vector<Batch::Impl::JointSlice> Batch::Impl::JointSlices() const {
-  std::vector<JointSlice> slices;
-  for (std::size_t c = 0, offset = 0; c < plan_.constraints.size(); ++c) {
+Batch::Impl::JointLayout Batch::Impl::JointCoordinateLayout() const {
+  JointLayout layout;
+  for (std::size_t c = 0; c < plan_.constraints.size(); ++c) {
     const std::size_t count = manyworlds::JointCoordinateCount(plan_.constraints[c]);
-    if (count > 0) slices.push_back({c, offset});
-    offset += count;
+    if (count == 0) continue;
+    layout.constraints.push_back(c);
+    layout.offsets.push_back(layout.per_world);
+    layout.per_world += count;
   }
-  return slices;
+  return layout;
 }
 
-void Batch::Impl::ReadJointCoordinatesOfBlock(std::size_t block,
-                                              std::span<const JointSlice> slices,
-                                              std::size_t per_world, float* out) const {
-  for (auto [world, end] = WorldsOf(block); world < end; ++world) {
-    for (const auto& [c, offset] : slices) {
-      JointCoordinatesOfLane(plan_, Block(block), Lane(world), c, out + world * per_world + offset);
-    }
-  }
+void Batch::Impl::ReadJointCoordinatesOfBlock(std::size_t block, const JointLayout& layout,
+                                              float* out) const {
+  const auto [first, end] = WorldsOf(block);
+  JointCoordinatesOfLanes(plan_, Block(block), Lane(first), end - first, layout.constraints,
+                          layout.offsets, layout.per_world, out + first * layout.per_world);
 }
 
 void Batch::GetJointCoordinates(std::span<float> out) const {
   const Impl& batch = impl();
-  const std::size_t per_world = JointCoordinatesPerWorld();
-  batch.CheckSize(out.size(), batch.world_count_ * per_world, "GetJointCoordinates");
-  const std::vector<Impl::JointSlice> slices = batch.JointSlices();
-  batch.ForEachBlock([&](std::size_t block) {
-    batch.ReadJointCoordinatesOfBlock(block, slices, per_world, out.data());
-  });
+  const Impl::JointLayout layout = batch.JointCoordinateLayout();
+  batch.CheckSize(out.size(), batch.world_count_ * layout.per_world, "GetJointCoordinates");
+  batch.ForEachBlock(
+      [&](std::size_t block) { batch.ReadJointCoordinatesOfBlock(block, layout, out.data()); });
 }
 
 std::size_t Batch::MotorForceCount(std::size_t constraint) const {

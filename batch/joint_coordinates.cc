@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "batch/constraint_lanes.h"
 #include "batch/lane_readout.h"
@@ -80,19 +81,18 @@ std::vector<std::string> JointCoordinateNames(const ConstraintPlan& c) {
   return {};
 }
 
-void JointCoordinatesOfLane(const StepPlan& plan, const std::byte* block, std::size_t lane,
-                            std::size_t constraint, float* out) {
-  const LaneReader read{block, lane};
-  const ConstraintPlan& c = plan.constraints[constraint];
+namespace {
+
+// The coordinates of constraint c from its bodies' poses and motions.
+void CoordinatesOf(const ConstraintPlan& c, const LaneReader& read, const Pose& b1,
+                   const Pose& b2, const Motion& m1, const Motion& m2, float* out) {
   const std::size_t count = JointCoordinateCount(c);
-  if (count == 0) return;
-  const Pose b1 = BodyPose(plan, read, c.body1), b2 = BodyPose(plan, read, c.body2);
-  const Motion m1 = BodyMotion(plan, read, c.body1), m2 = BodyMotion(plan, read, c.body2);
   double values[12] = {};
   switch (c.type) {
     case ConstraintType::kHinge: {
       const auto& s = read.at<HingeConstraintLanes>(c.offset);
-      const double theta = HingeAngle(b1, b2, read, s);
+      Vector a1;
+      const double theta = HingeAngle(b1, b2, read, s, &a1);
       const double reference = read(s.turn_reference_angle);
       values[0] = theta;
       // theta and the reference both lie in (-pi, pi]: one fold suffices.
@@ -100,7 +100,7 @@ void JointCoordinatesOfLane(const StepPlan& plan, const std::byte* block, std::s
       if (since_setup > M_PI) since_setup -= kTwoPi;
       if (since_setup < -M_PI) since_setup += kTwoPi;
       values[1] = reference + kTwoPi * read(s.turns) + since_setup;
-      values[2] = (m2.w - m1.w).dot(b1.q * read(s.hinge_axis1_local));
+      values[2] = (m2.w - m1.w).dot(a1);
       break;
     }
     case ConstraintType::kSlider: {
@@ -168,6 +168,49 @@ void JointCoordinatesOfLane(const StepPlan& plan, const std::byte* block, std::s
     case ConstraintType::kRackAndPinion: break;
   }
   for (std::size_t i = 0; i < count; ++i) out[i] = static_cast<float>(values[i]);
+}
+
+}  // namespace
+
+void JointCoordinatesOfLane(const StepPlan& plan, const std::byte* block, std::size_t lane,
+                            std::size_t constraint, float* out) {
+  const LaneReader read{block, lane};
+  const ConstraintPlan& c = plan.constraints[constraint];
+  if (JointCoordinateCount(c) == 0) return;
+  CoordinatesOf(c, read, BodyPose(plan, read, c.body1), BodyPose(plan, read, c.body2),
+                BodyMotion(plan, read, c.body1), BodyMotion(plan, read, c.body2), out);
+}
+
+// The same values as JointCoordinatesOfLane per constraint (the same
+// functions on the same inputs), but each body's pose (a normalised
+// quaternion) and motion read once per world instead of once per constraint
+// that names it: a chain's middle link, cartpole's cart.
+void JointCoordinatesOfLanes(const StepPlan& plan, const std::byte* block, std::size_t first_lane,
+                             std::size_t lanes, std::span<const std::size_t> constraints,
+                             std::span<const std::size_t> offsets, std::size_t per_world,
+                             float* out) {
+  const std::size_t bodies = plan.bodies.size();
+  std::vector<Pose> poses(bodies);
+  std::vector<Motion> motions(bodies);
+  std::vector<std::size_t> read_in_lane(bodies, kAbsent);  // the lane each body was read for
+  for (std::size_t lane = first_lane; lane < first_lane + lanes; ++lane) {
+    const LaneReader read{block, lane};
+    const auto body = [&](std::size_t b) {
+      if (read_in_lane[b] != lane) {
+        poses[b] = BodyPose(plan, read, b);
+        motions[b] = BodyMotion(plan, read, b);
+        read_in_lane[b] = lane;
+      }
+    };
+    float* world = out + (lane - first_lane) * per_world;
+    for (std::size_t i = 0; i < constraints.size(); ++i) {
+      const ConstraintPlan& c = plan.constraints[constraints[i]];
+      body(c.body1);
+      body(c.body2);
+      CoordinatesOf(c, read, poses[c.body1], poses[c.body2], motions[c.body1], motions[c.body2],
+                    world + offsets[i]);
+    }
+  }
 }
 
 std::size_t MotorForceCount(const ConstraintPlan& c) {
