@@ -101,21 +101,16 @@ class Rollout:
             batch.reset(done)
         return time.perf_counter_ns() - start, time.thread_time_ns() - start_cpu
 
-    def fused(self, batch, settings):
-        obs = self.observations
+    def fused(self, batch, settings, output="state_out"):
+        outputs = {output: self.observations if output == "state_out" else self.joints}
         start, start_cpu = time.perf_counter_ns(), time.thread_time_ns()
         for forces, done in zip(self.forces, self.done_masks):
             batch.set_body_forces(CART, forces)
-            batch.step(settings, reset_mask=done, state_out=obs)
+            batch.step(settings, reset_mask=done, **outputs)
         return time.perf_counter_ns() - start, time.thread_time_ns() - start_cpu
 
     def fused_joints(self, batch, settings):
-        joints = self.joints
-        start, start_cpu = time.perf_counter_ns(), time.thread_time_ns()
-        for forces, done in zip(self.forces, self.done_masks):
-            batch.set_body_forces(CART, forces)
-            batch.step(settings, reset_mask=done, joints_out=joints)
-        return time.perf_counter_ns() - start, time.thread_time_ns() - start_cpu
+        return self.fused(batch, settings, output="joints_out")
 
     def fused_with_numpy_done(self, batch, settings):
         obs, scratch, done, tilted = self.observations, self.scratch, self.done, self.tilted
@@ -131,36 +126,24 @@ class Rollout:
             np.logical_or(done, tilted, out=done)
         return time.perf_counter_ns() - start, time.thread_time_ns() - start_cpu
 
-    def fused_breakdown(self, batch, settings):
-        """Microseconds per call of each phase of `fused`."""
-        totals = dict.fromkeys(FUSED_PHASES, 0)
+    def breakdown(self, batch, settings, fused=False):
+        """Microseconds per call of each phase of `loop` (or `fused`),
+        summed over the steps and divided by their number."""
         obs = self.observations
+        phases = {"set_body_forces": lambda forces, done: batch.set_body_forces(CART, forces)}
+        if fused:
+            phases[FUSED_PHASES[1]] = lambda forces, done: batch.step(settings, reset_mask=done,
+                                                                      state_out=obs)
+        else:
+            phases["step"] = lambda forces, done: batch.step(settings)
+            phases["get_state"] = lambda forces, done: batch.get_state(out=obs)
+            phases["reset"] = lambda forces, done: batch.reset(done)
+        totals = dict.fromkeys(phases, 0)
         for forces, done in zip(self.forces, self.done_masks):
-            t0 = time.perf_counter_ns()
-            batch.set_body_forces(CART, forces)
-            t1 = time.perf_counter_ns()
-            batch.step(settings, reset_mask=done, state_out=obs)
-            t2 = time.perf_counter_ns()
-            for phase, ns in zip(FUSED_PHASES, (t1 - t0, t2 - t1)):
-                totals[phase] += ns
-        return {phase: ns / len(self.forces) / 1000 for phase, ns in totals.items()}
-
-    def breakdown(self, batch, settings):
-        """Microseconds per call of each phase of `loop`, summed over the steps."""
-        totals = dict.fromkeys(PHASES, 0)
-        obs = self.observations
-        for forces, done in zip(self.forces, self.done_masks):
-            t0 = time.perf_counter_ns()
-            batch.set_body_forces(CART, forces)
-            t1 = time.perf_counter_ns()
-            batch.step(settings)
-            t2 = time.perf_counter_ns()
-            batch.get_state(out=obs)
-            t3 = time.perf_counter_ns()
-            batch.reset(done)
-            t4 = time.perf_counter_ns()
-            for phase, ns in zip(PHASES, (t1 - t0, t2 - t1, t3 - t2, t4 - t3)):
-                totals[phase] += ns
+            for phase, call in phases.items():
+                start = time.perf_counter_ns()
+                call(forces, done)
+                totals[phase] += time.perf_counter_ns() - start
         return {phase: ns / len(self.forces) / 1000 for phase, ns in totals.items()}
 
 
@@ -217,7 +200,7 @@ def main():
                 config["wall"][name].append(wall / world_steps)
                 config["cpu"][name].append(cpu / world_steps)
             config["breakdowns"].append(rollout.breakdown(batch, settings))
-            config["fused_breakdowns"].append(rollout.fused_breakdown(batch, settings))
+            config["fused_breakdowns"].append(rollout.breakdown(batch, settings, fused=True))
 
     print(f"manyworlds {mw.__version__}: cartpole, {args.worlds} worlds, {args.steps} steps "
           f"x {args.repeats} repeats (median), SIMD target {configs[0]['batch'].simd_target}, "
