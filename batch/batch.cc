@@ -413,14 +413,20 @@ void Batch::Impl::CheckSize(std::size_t got, std::size_t want, const char* what)
   }
 }
 
+// Block by block, the block's lane arrays located once (RL loops write
+// their actions every step: SetForces(body) of 4096 worlds is part of the
+// loop's cost over Step).
 void Batch::Impl::WriteLanes(std::size_t offset, std::span<const float> per_world) {
-  for (std::size_t world = 0; world < world_count_; ++world) {
-    Vec3Lanes& v = In<Vec3Lanes>(world, offset);
-    const std::size_t l = Lane(world);
-    v.x[l] = per_world[world * 3 + 0];
-    v.y[l] = per_world[world * 3 + 1];
-    v.z[l] = per_world[world * 3 + 2];
-    NoteInput(world, v.x[l], v.y[l], v.z[l]);
+  for (std::size_t block = 0; block < block_count_; ++block) {
+    Vec3Lanes& v = At<Vec3Lanes>(Block(block), offset);
+    for (auto [world, end] = WorldsOf(block); world < end; ++world) {
+      const std::size_t l = Lane(world);
+      const float* value = per_world.data() + world * 3;
+      v.x[l] = value[0];
+      v.y[l] = value[1];
+      v.z[l] = value[2];
+      NoteInput(world, value[0], value[1], value[2]);
+    }
   }
 }
 
