@@ -27,7 +27,7 @@ namespace manyworlds {
 Batch::Impl::BlockIo Batch::Impl::CheckedBlockIo(const StepIo& io) const {
   const std::size_t state_floats = world_count_ * plan_.bodies.size() * kStateFloatsPerBody;
   BlockIo checked;
-  checked.joints = JointCoordinateLayout();
+  if (!io.joints_out.empty()) checked.joints = JointCoordinateLayout();
   if (!io.reset_mask.empty()) CheckSize(io.reset_mask.size(), world_count_, "Step reset_mask");
   if (!io.reset_states.empty()) {
     if (io.reset_mask.empty()) {
@@ -41,6 +41,7 @@ Batch::Impl::BlockIo Batch::Impl::CheckedBlockIo(const StepIo& io) const {
   if (!io.joints_out.empty()) {
     CheckSize(io.joints_out.size(), world_count_ * checked.joints.per_world, "Step joints_out");
   }
+  checked.any = !io.reset_mask.empty() || !io.state_out.empty() || !io.joints_out.empty();
   checked.reset_mask = io.reset_mask;
   checked.reset_states = io.reset_states;
   checked.state_out = io.state_out.empty() ? nullptr : io.state_out.data();
@@ -60,7 +61,8 @@ bool Batch::Step(const StepSettings& settings, const StepIo& io, std::stop_token
   Impl& batch = impl();
   const Impl::Exclusive exclusive(batch, "Step");
   const Impl::BlockIo checked = batch.CheckedBlockIo(io);  // before any world changes
-  batch.Step(settings, stop, &checked);  // checks the settings before any world changes
+  // (An empty StepIo, Python's plain step(), runs exactly the plain Step.)
+  batch.Step(settings, stop, checked.any ? &checked : nullptr);  // checks the settings first
   batch.last_settings_ = settings;
   return batch.EveryWorldStepped(stop);
 }

@@ -88,6 +88,7 @@ class Batch::Impl {
     float* state_out = nullptr;
     float* joints_out = nullptr;
     JointLayout joints;
+    bool any = false;  // anything to do besides stepping
   };
   // Refuses (std::invalid_argument, by name) what Step(settings, io) must
   // not start with; writes nothing.
