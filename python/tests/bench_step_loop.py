@@ -37,6 +37,7 @@ installed one. --max-overhead P exits 1 when an overhead is above P percent.
 
 import argparse
 import math
+import os
 import statistics
 import sys
 import time
@@ -185,6 +186,7 @@ def main():
                         "cpu": {name: [] for name in ("step",) + LOOPS},
                         "breakdowns": [], "fused_breakdowns": []})
 
+    load_before = os.getloadavg()
     world_steps = args.steps * args.worlds
     for repeat in range(args.repeats):
         for config in configs:
@@ -202,6 +204,9 @@ def main():
             config["breakdowns"].append(rollout.breakdown(batch, settings))
             config["fused_breakdowns"].append(rollout.breakdown(batch, settings, fused=True))
 
+    # Another program on the second core makes the 2-thread figures mean little.
+    print("load average (1, 5, 15 min): before %.2f %.2f %.2f, after %.2f %.2f %.2f"
+          % (load_before + os.getloadavg()))
     print(f"manyworlds {mw.__version__}: cartpole, {args.worlds} worlds, {args.steps} steps "
           f"x {args.repeats} repeats (median), SIMD target {configs[0]['batch'].simd_target}, "
           f"{100 * args.reset_rate:g} % of worlds reset per step")
