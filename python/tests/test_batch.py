@@ -286,19 +286,26 @@ def test_constraint_errors(cartpole):
     assert cartpole.constraint_error(5, 1) >= 0 and cartpole.constraint_velocity_error(5, 1) >= 0
 
 
-def test_step_releases_the_gil_and_concurrent_use_raises():
+@pytest.mark.parametrize("fused", [False, True])
+def test_step_releases_the_gil_and_concurrent_use_raises(fused):
     """A step on one thread runs while Python goes on on another; a call on
-    the same Batch from that other thread meanwhile raises RuntimeError."""
+    the same Batch from that other thread meanwhile raises RuntimeError.
+    The same with the fused step's resets and outputs."""
     batch = mw.Batch(mw.make_scene("chain64"), 4096, threads=1)
     slow = mw.StepSettings(velocity_iterations=200, substeps=4)
     started, done = threading.Event(), threading.Event()
     errors = []
     out = np.empty((4096, batch.num_bodies, 13), np.float32)
+    outputs = {}
+    if fused:
+        outputs = {"reset_mask": np.arange(4096) % 7 == 0,
+                   "state_out": np.empty_like(out),
+                   "joints_out": np.empty((4096, batch.joint_coordinates_per_world), np.float32)}
 
     def step():
         started.set()
         try:
-            batch.step(slow)
+            batch.step(slow, **outputs)
         except Exception as error:  # noqa: BLE001 - reported below
             errors.append(error)
         done.set()
@@ -366,3 +373,29 @@ def test_fused_step_resets_after_the_step_for_autoreset(cartpole):
     cartpole.step(reset_mask=done, state_out=state_out)
     assert_same_bits(state_out[done], initial[done])
     assert not np.array_equal(bits(state_out[~done]), bits(initial[~done]))
+
+
+def test_fused_step_flags_a_nan_world_and_no_other():
+    """A NaN action in world 9 under the fused step: world 9 is flagged, every
+    other world's observation has the bits of a clean batch; resetting world 9
+    in a later step clears its flag."""
+    scene = mw.make_scene("cartpole")
+    clean, dirty = mw.Batch(scene, WORLDS), mw.Batch(scene, WORLDS)
+    rng = np.random.default_rng(2)
+    obs_clean, obs_dirty = (np.empty((WORLDS, 3, 13), np.float32) for _ in range(2))
+    no_reset, reset_9 = np.zeros(WORLDS, bool), np.zeros(WORLDS, bool)
+    reset_9[9] = True
+    others = np.arange(WORLDS) != 9
+    for step in range(5):
+        forces = random_cart_forces(rng, WORLDS)
+        clean.set_body_forces(CART, forces)
+        if step == 1:
+            forces[9, 0] = np.nan
+        dirty.set_body_forces(CART, forces)
+        clean.step(reset_mask=no_reset, state_out=obs_clean)
+        dirty.step(reset_mask=reset_9 if step == 3 else no_reset, state_out=obs_dirty)
+        assert_same_bits(obs_dirty[others], obs_clean[others])
+        assert not dirty.health[others].any()
+        if step == 1:
+            assert dirty.health[9] & mw.WorldHealthBits.NON_FINITE_INPUT
+    assert dirty.health[9] == 0 and np.isfinite(obs_dirty[9]).all()
