@@ -432,9 +432,17 @@ void Batch::Impl::WriteLanes(std::size_t offset, std::span<const float> per_worl
 
 // Every LaneArray of the world's block, lane `world % 16`, from the initial block.
 void Batch::Impl::ResetWorld(std::size_t world) {
-  LaneArray* block = storage_.data() + (world / kLaneWidth) * arrays_per_block_;
-  const std::size_t l = Lane(world);
-  for (std::size_t i = 0; i < arrays_per_block_; ++i) block[i][l] = initial_[i][l];
+  const std::size_t lane = Lane(world);
+  ResetLanes(world / kLaneWidth, &lane, 1);
+}
+
+// Array by array, each lane in turn: every cache line of the block (one
+// LaneArray each) is touched once however many of its worlds reset.
+void Batch::Impl::ResetLanes(std::size_t block, const std::size_t* lanes, std::size_t count) {
+  LaneArray* arrays = storage_.data() + block * arrays_per_block_;
+  for (std::size_t i = 0; i < arrays_per_block_; ++i) {
+    for (std::size_t k = 0; k < count; ++k) arrays[i][lanes[k]] = initial_[i][lanes[k]];
+  }
 }
 
 // Over the batch's threads, block by block (a world's lanes, health and
@@ -448,10 +456,16 @@ void Batch::Impl::ResetWorlds(std::span<const std::uint8_t> mask,
 
 void Batch::Impl::ResetWorldsOfBlock(std::size_t block, std::span<const std::uint8_t> mask,
                                      std::span<const float> states) {
+  const auto [first, end] = WorldsOf(block);
+  std::size_t lanes[kLaneWidth], count = 0;
+  for (std::size_t w = first; w < end; ++w) {
+    if (mask[w] != 0) lanes[count++] = Lane(w);
+  }
+  if (count == 0) return;
+  ResetLanes(block, lanes, count);
   const std::size_t bodies = plan_.bodies.size();
-  for (auto [w, end] = WorldsOf(block); w < end; ++w) {
-    if (mask[w] == 0) continue;
-    ResetWorld(w);
+  for (std::size_t k = 0; k < count; ++k) {
+    const std::size_t w = first + lanes[k];
     for (std::size_t b = 0; b < bodies && !states.empty(); ++b) {
       WriteState(w, b, states.data() + (w * bodies + b) * kStateFloatsPerBody);
     }

@@ -170,6 +170,7 @@ class Batch::Impl {
   }
   void WriteLanes(std::size_t offset, std::span<const float> per_world);
   void ResetWorld(std::size_t world);
+  void ResetLanes(std::size_t block, const std::size_t* lanes, std::size_t count);
   // Reset (and with `states`, ResetTo) of the masked worlds, over the
   // batch's threads, or of one block's.
   void ResetWorlds(std::span<const std::uint8_t> mask, std::span<const float> states = {});
