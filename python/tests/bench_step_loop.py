@@ -32,7 +32,8 @@ A breakdown (microseconds per call inside the loop) follows.
     /usr/bin/python3 python/tests/bench_step_loop.py --smoke    # seconds (ctest)
 
 Run it with the build tree's package (PYTHONPATH=build/python) or the
-installed one. --max-overhead P exits 1 when an overhead is above P percent.
+installed one. --max-overhead P exits 1 when the fused loop's overhead is above P
+percent.
 """
 
 import argparse
