@@ -51,9 +51,12 @@ Batch::Impl::JointLayout Batch::Impl::JointCoordinateLayout() const {
 
 void Batch::Impl::ReadJointCoordinatesOfBlock(std::size_t block, const JointLayout& layout,
                                               float* out) const {
-  const auto [first, end] = WorldsOf(block);
-  JointCoordinatesOfLanes(plan_, Block(block), Lane(first), end - first, layout.constraints,
-                          layout.offsets, layout.per_world, out + first * layout.per_world);
+  for (auto [world, end] = WorldsOf(block); world < end; ++world) {
+    for (std::size_t i = 0; i < layout.constraints.size(); ++i) {
+      JointCoordinatesOfLane(plan_, Block(block), Lane(world), layout.constraints[i],
+                             out + world * layout.per_world + layout.offsets[i]);
+    }
+  }
 }
 
 void Batch::GetJointCoordinates(std::span<float> out) const {

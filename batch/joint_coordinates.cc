@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <vector>
 
 #include "batch/constraint_lanes.h"
 #include "batch/lane_readout.h"
@@ -179,38 +178,6 @@ void JointCoordinatesOfLane(const StepPlan& plan, const std::byte* block, std::s
   if (JointCoordinateCount(c) == 0) return;
   CoordinatesOf(c, read, BodyPose(plan, read, c.body1), BodyPose(plan, read, c.body2),
                 BodyMotion(plan, read, c.body1), BodyMotion(plan, read, c.body2), out);
-}
-
-// The same values as JointCoordinatesOfLane per constraint (the same
-// functions on the same inputs), but each body's pose (a normalised
-// quaternion) and motion read once per world instead of once per constraint
-// that names it: a chain's middle link, cartpole's cart.
-void JointCoordinatesOfLanes(const StepPlan& plan, const std::byte* block, std::size_t first_lane,
-                             std::size_t lanes, std::span<const std::size_t> constraints,
-                             std::span<const std::size_t> offsets, std::size_t per_world,
-                             float* out) {
-  const std::size_t bodies = plan.bodies.size();
-  std::vector<Pose> poses(bodies);
-  std::vector<Motion> motions(bodies);
-  std::vector<std::size_t> read_in_lane(bodies, kAbsent);  // the lane each body was read for
-  for (std::size_t lane = first_lane; lane < first_lane + lanes; ++lane) {
-    const LaneReader read{block, lane};
-    const auto body = [&](std::size_t b) {
-      if (read_in_lane[b] != lane) {
-        poses[b] = BodyPose(plan, read, b);
-        motions[b] = BodyMotion(plan, read, b);
-        read_in_lane[b] = lane;
-      }
-    };
-    float* world = out + (lane - first_lane) * per_world;
-    for (std::size_t i = 0; i < constraints.size(); ++i) {
-      const ConstraintPlan& c = plan.constraints[constraints[i]];
-      body(c.body1);
-      body(c.body2);
-      CoordinatesOf(c, read, poses[c.body1], poses[c.body2], motions[c.body1], motions[c.body2],
-                    world + offsets[i]);
-    }
-  }
 }
 
 std::size_t MotorForceCount(const ConstraintPlan& c) {

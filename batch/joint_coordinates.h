@@ -27,7 +27,6 @@
 #pragma once
 
 #include <cstddef>
-#include <span>
 #include <string>
 #include <vector>
 
@@ -41,14 +40,6 @@ std::vector<std::string> JointCoordinateNames(const ConstraintPlan& c);
 // Writes JointCoordinateNames(c).size() floats.
 void JointCoordinatesOfLane(const StepPlan& plan, const std::byte* block, std::size_t lane,
                             std::size_t constraint, float* out);
-
-// JointCoordinatesOfLane of `constraints` (those with coordinates) for
-// `lanes` lanes from first_lane, into out[lane - first_lane][per_world] at
-// the constraints' offsets; each body read once per lane.
-void JointCoordinatesOfLanes(const StepPlan& plan, const std::byte* block, std::size_t first_lane,
-                             std::size_t lanes, std::span<const std::size_t> constraints,
-                             std::span<const std::size_t> offsets, std::size_t per_world,
-                             float* out);
 
 std::size_t MotorForceCount(const ConstraintPlan& c);
 // Writes MotorForceCount(c) floats; `substep_dt` 0 (no step yet) gives zeros.
