@@ -1,5 +1,7 @@
 // Batch: the blocks of worlds, the TBB loop over them, state and actions
-// (per-world parameters: batch_parameters.cc; snapshots: batch_snapshot.cc).
+// (per-world parameters: batch_parameters.cc; snapshots: batch_snapshot.cc;
+// state read-outs: batch_state_read.cc; the fused step's resets and
+// outputs: batch_fused_io.cc).
 
 #include "manyworlds/batch.h"
 
@@ -123,7 +125,7 @@ Batch::Impl::Impl(const Scene& scene, std::size_t world_count, BatchOptions opti
   }
 }
 
-void Batch::Impl::Step(const StepSettings& settings, std::stop_token stop) {
+void Batch::Impl::Step(const StepSettings& settings, std::stop_token stop, const BlockIo* io) {
   CheckStepSettings(settings);
   const float substep_dt = settings.delta_time / static_cast<float>(settings.substeps);
   StepParams params{};
@@ -151,10 +153,12 @@ void Batch::Impl::Step(const StepSettings& settings, std::stop_token stop) {
         for (auto [world, end] = WorldsOf(block); world < end; ++world) {
           health_[world] = kNotStepped;
         }
+        if (io != nullptr) FinishBlock(block, *io, false);
         continue;
       }
       const bool unhealthy = kernels_->step_block(plan_, Block(block), params);
       RecordHealth(block, unhealthy, reset_unhealthy);
+      if (io != nullptr) FinishBlock(block, *io, true);
     }
   };
   if (threads_ == 1 || block_count_ == 1) {
@@ -268,38 +272,6 @@ void Batch::Impl::ReadState(std::size_t world, std::size_t body, float* out) con
 
 namespace {
 
-// Columns [first, first + kCount) of every body's 13-float state row (in
-// StateField order), into out[world][body][kCount]: block by block (over the
-// batch's threads, as the joint coordinates) and body by body, each of the
-// body's lane arrays located once per block, and the count a constant so
-// that the copy of a row unrolls. Reading observations every step is part of
-// an RL loop's cost next to Step (python/tests/bench_step_loop.py): world by
-// world and body by body, a GetState of 4096 cartpoles took a sixth of their
-// Step (110 us of 680), this way 50 us on one thread; GetField of positions
-// 140 us, now 17.
-template <std::size_t kCount>
-void ReadStateColumns(const Batch::Impl& batch, std::size_t first, float* out) {
-  const std::size_t bodies = batch.plan_.bodies.size();
-  batch.ForEachBlock([&](std::size_t block) {
-    const auto [block_first, block_end] = batch.WorldsOf(block);
-    const std::size_t lanes = block_end - block_first;
-    for (std::size_t b = 0; b < bodies; ++b) {
-      const BodyLanes& body = batch.In<BodyLanes>(block_first, batch.plan_.bodies[b].offset);
-      const LaneArray* const row[kStateFloatsPerBody] = {
-          &body.position.x,         &body.position.y,         &body.position.z,
-          &body.rotation.x,         &body.rotation.y,         &body.rotation.z,
-          &body.rotation.w,         &body.linear_velocity.x,  &body.linear_velocity.y,
-          &body.linear_velocity.z,  &body.angular_velocity.x, &body.angular_velocity.y,
-          &body.angular_velocity.z};
-      const LaneArray* const* columns = row + first;
-      for (std::size_t l = 0; l < lanes; ++l) {
-        float* values = out + ((block_first + l) * bodies + b) * kCount;
-        for (std::size_t c = 0; c < kCount; ++c) values[c] = columns[c]->lanes[l];
-      }
-    }
-  });
-}
-
 double RotationNorm(const float* state) {
   double norm = 0.0;
   for (int i = 3; i < 7; ++i) norm += double(state[i]) * state[i];
@@ -368,37 +340,65 @@ void Batch::Impl::CheckSize(std::size_t got, std::size_t want, const char* what)
   }
 }
 
+// Block by block, the block's lane arrays located once (RL loops write
+// their actions every step: SetForces(body) of 4096 worlds is part of the
+// loop's cost over Step).
 void Batch::Impl::WriteLanes(std::size_t offset, std::span<const float> per_world) {
-  for (std::size_t world = 0; world < world_count_; ++world) {
-    Vec3Lanes& v = In<Vec3Lanes>(world, offset);
-    const std::size_t l = Lane(world);
-    v.x[l] = per_world[world * 3 + 0];
-    v.y[l] = per_world[world * 3 + 1];
-    v.z[l] = per_world[world * 3 + 2];
-    NoteInput(world, v.x[l], v.y[l], v.z[l]);
+  for (std::size_t block = 0; block < block_count_; ++block) {
+    Vec3Lanes& v = At<Vec3Lanes>(Block(block), offset);
+    for (auto [world, end] = WorldsOf(block); world < end; ++world) {
+      const std::size_t l = Lane(world);
+      const float* value = per_world.data() + world * 3;
+      v.x[l] = value[0];
+      v.y[l] = value[1];
+      v.z[l] = value[2];
+      NoteInput(world, value[0], value[1], value[2]);
+    }
   }
 }
 
 // Every LaneArray of the world's block, lane `world % 16`, from the initial block.
 void Batch::Impl::ResetWorld(std::size_t world) {
-  LaneArray* block = storage_.data() + (world / kLaneWidth) * arrays_per_block_;
-  const std::size_t l = Lane(world);
-  for (std::size_t i = 0; i < arrays_per_block_; ++i) block[i][l] = initial_[i][l];
+  const std::size_t lane = Lane(world);
+  ResetLanes(world / kLaneWidth, &lane, 1);
+}
+
+// Array by array, each lane in turn: every cache line of the block (one
+// LaneArray each) is touched once however many of its worlds reset.
+void Batch::Impl::ResetLanes(std::size_t block, const std::size_t* lanes, std::size_t count) {
+  LaneArray* arrays = storage_.data() + block * arrays_per_block_;
+  for (std::size_t i = 0; i < arrays_per_block_; ++i) {
+    for (std::size_t k = 0; k < count; ++k) arrays[i][lanes[k]] = initial_[i][lanes[k]];
+  }
 }
 
 // Over the batch's threads, block by block (a world's lanes, health and
 // pending input are its block's alone): an RL loop resets done worlds every
 // step, each rewriting its lane of every array of its block, and with two
 // threads half of those blocks sit in the other core's cache after Step.
-void Batch::Impl::ResetWorlds(std::span<const std::uint8_t> mask) {
-  ForEachBlock([&](std::size_t block) {
-    for (auto [w, end] = WorldsOf(block); w < end; ++w) {
-      if (mask[w] == 0) continue;
-      ResetWorld(w);
-      health_[w] = 0;
-      pending_input_[w] = 0;
+void Batch::Impl::ResetWorlds(std::span<const std::uint8_t> mask,
+                              std::span<const float> states) {
+  ForEachBlock([&](std::size_t block) { ResetWorldsOfBlock(block, mask, states); });
+}
+
+void Batch::Impl::ResetWorldsOfBlock(std::size_t block, std::span<const std::uint8_t> mask,
+                                     std::span<const float> states) {
+  const auto [first, end] = WorldsOf(block);
+  std::size_t lanes[kLaneWidth], count = 0;
+  for (std::size_t w = first; w < end; ++w) {
+    if (mask[w] != 0) lanes[count++] = Lane(w);
+  }
+  if (count == 0) return;
+  ResetLanes(block, lanes, count);
+  const std::size_t bodies = plan_.bodies.size();
+  for (std::size_t k = 0; k < count; ++k) {
+    const std::size_t w = first + lanes[k];
+    for (std::size_t b = 0; b < bodies && !states.empty(); ++b) {
+      WriteState(w, b, states.data() + (w * bodies + b) * kStateFloatsPerBody);
     }
-  });
+    health_[w] = 0;
+    pending_input_[w] = 0;
+  }
 }
 
 // Swing-twist and six-DOF drives have one motor per axis; the single-value
@@ -476,8 +476,12 @@ bool Batch::Step(const StepSettings& settings, std::stop_token stop) {
   const Impl::Exclusive exclusive(batch, "Step");
   batch.Step(settings, stop);
   batch.last_settings_ = settings;
+  return batch.EveryWorldStepped(stop);
+}
+
+bool Batch::Impl::EveryWorldStepped(std::stop_token stop) const {
   return !stop.stop_requested() ||
-         std::none_of(batch.health_.begin(), batch.health_.end(),
+         std::none_of(health_.begin(), health_.end(),
                       [](std::uint8_t bits) { return (bits & kNotStepped) != 0; });
 }
 
@@ -487,28 +491,10 @@ std::size_t Batch::UnhealthyWorldCount() const {
                                                 [](std::uint8_t bits) { return bits != 0; }));
 }
 
-void Batch::GetState(std::span<float> out) const {
-  const Impl& batch = impl();
-  batch.CheckSize(out.size(), batch.world_count_ * batch.plan_.bodies.size() * kStateFloatsPerBody,
-                  "GetState");
-  ReadStateColumns<kStateFloatsPerBody>(batch, 0, out.data());
-}
-
 void Batch::SetState(std::span<const float> in, std::span<const std::uint8_t> world_mask) {
   Impl& batch = impl();
   const Impl::Exclusive exclusive(batch, "SetState");
   batch.WriteStates(in, world_mask);
-}
-
-void Batch::GetField(StateField field, std::span<float> out) const {
-  const Impl& batch = impl();
-  const std::size_t size = StateFieldSize(field);
-  batch.CheckSize(out.size(), batch.world_count_ * batch.plan_.bodies.size() * size, "GetField");
-  if (size == 4) {
-    ReadStateColumns<4>(batch, StateFieldOffset(field), out.data());
-  } else {
-    ReadStateColumns<3>(batch, StateFieldOffset(field), out.data());
-  }
 }
 
 void Batch::SetField(StateField field, std::span<const float> in) {
@@ -548,8 +534,7 @@ void Batch::ResetTo(std::span<const std::uint8_t> world_mask, std::span<const fl
   batch.CheckSize(world_mask.size(), world_count(), "ResetTo mask");
   batch.CheckSize(state.size(), world_count() * body_count() * kStateFloatsPerBody, "ResetTo");
   batch.CheckStates(state, world_mask);
-  batch.ResetWorlds(world_mask);
-  batch.WriteStates(state, world_mask);
+  batch.ResetWorlds(world_mask, state);
 }
 
 void Batch::SetForce(std::size_t world, std::size_t body, Float3 force) {

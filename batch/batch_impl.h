@@ -73,9 +73,35 @@ class Batch::Impl {
     });
   }
 
-  // Steps every block whose task starts before `stop` is requested.
-  void Step(const StepSettings& settings, std::stop_token stop);
+  // ---- what a Step(settings, io) does per block besides stepping
+  // (batch_fused_io.cc): the caller's StepIo, checked, with the joint
+  // coordinates' layout worked out once per call.
+  // The constraints that have joint coordinates and their offsets in a
+  // world's row of per_world floats.
+  struct JointLayout {
+    std::vector<std::size_t> constraints, offsets;
+    std::size_t per_world = 0;
+  };
+  struct BlockIo {
+    std::span<const std::uint8_t> reset_mask;
+    std::span<const float> reset_states;
+    float* state_out = nullptr;
+    float* joints_out = nullptr;
+    JointLayout joints;
+    bool any = false;  // anything to do besides stepping
+  };
+  // Refuses (std::invalid_argument, by name) what Step(settings, io) must
+  // not start with; writes nothing.
+  BlockIo CheckedBlockIo(const StepIo& io) const;
+  // After the block's step (stepped) or its skipping by a stop request.
+  void FinishBlock(std::size_t block, const BlockIo& io, bool stepped);
+
+  // Steps every block whose task starts before `stop` is requested; with
+  // `io`, each block's resets and outputs follow its step in the same task.
+  void Step(const StepSettings& settings, std::stop_token stop, const BlockIo* io = nullptr);
   void RecordHealth(std::size_t block, bool unhealthy, bool reset_unhealthy);
+  // Step's result: false when `stop` left some block unstepped.
+  bool EveryWorldStepped(std::stop_token stop) const;
 
   // ---- one caller at a time. A Batch is not thread-safe; calls that write
   // many worlds (or step them) hold `busy_` and throw if another thread
@@ -144,7 +170,20 @@ class Batch::Impl {
   }
   void WriteLanes(std::size_t offset, std::span<const float> per_world);
   void ResetWorld(std::size_t world);
-  void ResetWorlds(std::span<const std::uint8_t> mask);
+  void ResetLanes(std::size_t block, const std::size_t* lanes, std::size_t count);
+  // Reset (and with `states`, ResetTo) of the masked worlds, over the
+  // batch's threads, or of one block's.
+  void ResetWorlds(std::span<const std::uint8_t> mask, std::span<const float> states = {});
+  void ResetWorldsOfBlock(std::size_t block, std::span<const std::uint8_t> mask,
+                          std::span<const float> states);
+
+  // ---- observations of one block's real worlds: every body's state into
+  // out[world][body][13] (batch.cc), the joint coordinates into
+  // out[world][layout.per_world] (batch_joints.cc).
+  void ReadStateOfBlock(std::size_t block, float* out) const;
+  JointLayout JointCoordinateLayout() const;
+  void ReadJointCoordinatesOfBlock(std::size_t block, const JointLayout& layout,
+                                   float* out) const;
 
   // ---- per-constraint parameters
   static void RefuseMultiAxis(const ConstraintPlan& c, const char* what);

@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "batch/batch_impl.h"
@@ -38,25 +37,34 @@ std::size_t Batch::JointCoordinatesPerWorld() const {
   return total;
 }
 
+Batch::Impl::JointLayout Batch::Impl::JointCoordinateLayout() const {
+  JointLayout layout;
+  for (std::size_t c = 0; c < plan_.constraints.size(); ++c) {
+    const std::size_t count = manyworlds::JointCoordinateCount(plan_.constraints[c]);
+    if (count == 0) continue;
+    layout.constraints.push_back(c);
+    layout.offsets.push_back(layout.per_world);
+    layout.per_world += count;
+  }
+  return layout;
+}
+
+void Batch::Impl::ReadJointCoordinatesOfBlock(std::size_t block, const JointLayout& layout,
+                                              float* out) const {
+  for (auto [world, end] = WorldsOf(block); world < end; ++world) {
+    for (std::size_t i = 0; i < layout.constraints.size(); ++i) {
+      JointCoordinatesOfLane(plan_, Block(block), Lane(world), layout.constraints[i],
+                             out + world * layout.per_world + layout.offsets[i]);
+    }
+  }
+}
+
 void Batch::GetJointCoordinates(std::span<float> out) const {
   const Impl& batch = impl();
-  const std::size_t per_world = JointCoordinatesPerWorld();
-  batch.CheckSize(out.size(), batch.world_count_ * per_world, "GetJointCoordinates");
-  // Only the constraints that have coordinates, with their offsets in a world's slice.
-  std::vector<std::pair<std::size_t, std::size_t>> read;
-  for (std::size_t c = 0, offset = 0; c < batch.plan_.constraints.size(); ++c) {
-    const std::size_t count = manyworlds::JointCoordinateCount(batch.plan_.constraints[c]);
-    if (count > 0) read.emplace_back(c, offset);
-    offset += count;
-  }
-  batch.ForEachBlock([&](std::size_t block) {
-    for (auto [world, end] = batch.WorldsOf(block); world < end; ++world) {
-      for (const auto& [c, offset] : read) {
-        JointCoordinatesOfLane(batch.plan_, batch.Block(block), Impl::Lane(world), c,
-                               out.data() + world * per_world + offset);
-      }
-    }
-  });
+  const Impl::JointLayout layout = batch.JointCoordinateLayout();
+  batch.CheckSize(out.size(), batch.world_count_ * layout.per_world, "GetJointCoordinates");
+  batch.ForEachBlock(
+      [&](std::size_t block) { batch.ReadJointCoordinatesOfBlock(block, layout, out.data()); });
 }
 
 std::size_t Batch::MotorForceCount(std::size_t constraint) const {

@@ -80,19 +80,18 @@ std::vector<std::string> JointCoordinateNames(const ConstraintPlan& c) {
   return {};
 }
 
-void JointCoordinatesOfLane(const StepPlan& plan, const std::byte* block, std::size_t lane,
-                            std::size_t constraint, float* out) {
-  const LaneReader read{block, lane};
-  const ConstraintPlan& c = plan.constraints[constraint];
+namespace {
+
+// The coordinates of constraint c from its bodies' poses and motions.
+void CoordinatesOf(const ConstraintPlan& c, const LaneReader& read, const Pose& b1,
+                   const Pose& b2, const Motion& m1, const Motion& m2, float* out) {
   const std::size_t count = JointCoordinateCount(c);
-  if (count == 0) return;
-  const Pose b1 = BodyPose(plan, read, c.body1), b2 = BodyPose(plan, read, c.body2);
-  const Motion m1 = BodyMotion(plan, read, c.body1), m2 = BodyMotion(plan, read, c.body2);
   double values[12] = {};
   switch (c.type) {
     case ConstraintType::kHinge: {
       const auto& s = read.at<HingeConstraintLanes>(c.offset);
-      const double theta = HingeAngle(b1, b2, read, s);
+      Vector a1;
+      const double theta = HingeAngle(b1, b2, read, s, &a1);
       const double reference = read(s.turn_reference_angle);
       values[0] = theta;
       // theta and the reference both lie in (-pi, pi]: one fold suffices.
@@ -100,7 +99,7 @@ void JointCoordinatesOfLane(const StepPlan& plan, const std::byte* block, std::s
       if (since_setup > M_PI) since_setup -= kTwoPi;
       if (since_setup < -M_PI) since_setup += kTwoPi;
       values[1] = reference + kTwoPi * read(s.turns) + since_setup;
-      values[2] = (m2.w - m1.w).dot(b1.q * read(s.hinge_axis1_local));
+      values[2] = (m2.w - m1.w).dot(a1);
       break;
     }
     case ConstraintType::kSlider: {
@@ -168,6 +167,17 @@ void JointCoordinatesOfLane(const StepPlan& plan, const std::byte* block, std::s
     case ConstraintType::kRackAndPinion: break;
   }
   for (std::size_t i = 0; i < count; ++i) out[i] = static_cast<float>(values[i]);
+}
+
+}  // namespace
+
+void JointCoordinatesOfLane(const StepPlan& plan, const std::byte* block, std::size_t lane,
+                            std::size_t constraint, float* out) {
+  const LaneReader read{block, lane};
+  const ConstraintPlan& c = plan.constraints[constraint];
+  if (JointCoordinateCount(c) == 0) return;
+  CoordinatesOf(c, read, BodyPose(plan, read, c.body1), BodyPose(plan, read, c.body2),
+                BodyMotion(plan, read, c.body1), BodyMotion(plan, read, c.body2), out);
 }
 
 std::size_t MotorForceCount(const ConstraintPlan& c) {

@@ -72,10 +72,12 @@ inline double Fold(double angle) {
 }
 
 // Jolt's hinge angle: diff = q2 r0^-1 q1*, theta = 2 atan((xyz(diff) . a1) / w(diff)).
+// `axis`, if given, receives a1 (body 1's hinge axis in world space).
 inline double HingeAngle(const Pose& b1, const Pose& b2, const LaneReader& read,
-                         const HingeConstraintLanes& s) {
+                         const HingeConstraintLanes& s, Vector* axis = nullptr) {
   const Rotation diff = b2.q * read(s.inv_initial_orientation) * b1.q.conjugate();
   const Vector a1 = b1.q * read(s.hinge_axis1_local);
+  if (axis != nullptr) *axis = a1;
   if (diff.w() == 0.0) return M_PI;
   return 2.0 * std::atan(diff.vec().dot(a1) / diff.w());
 }

@@ -138,6 +138,36 @@ enum class StateField : std::uint8_t {
 std::size_t StateFieldOffset(StateField field);
 std::size_t StateFieldSize(StateField field);
 
+// What one Batch::Step(settings, io) does besides stepping, block by block
+// in the step's own pass (on the step's threads, while each block of 16
+// worlds is in cache): an RL loop's resets of done worlds and its reads of
+// observations, which as separate calls pass over every block again (on
+// two threads from the other core's cache). Every span is optional (empty:
+// not done); a non-empty one must have exactly the size given, or the call
+// throws std::invalid_argument naming it before anything is written or
+// stepped. Per block, in this order:
+//   1. step the block (health flags and StepSettings::unhealthy_worlds as
+//      in a plain Step);
+//   2. reset the worlds with reset_mask[world] != 0 to the scene's initial
+//      state, as Reset (health and pending-input notes cleared), or, with
+//      reset_states, as ResetTo (a zero rotation in a masked world's rows is
+//      refused up front);
+//   3. write the outputs from the worlds as they are now.
+// The results are bit for bit those of Step(settings, stop); then
+// Reset(mask) or ResetTo(mask, states); GetState(state_out);
+// GetJointCoordinates(joints_out). Resetting after the step is what
+// Gymnasium's and EnvPool's autoreset needs: pass the worlds that were done
+// after the previous step; their action of this step is wasted, and the
+// observation written for them is their new episode's first (the initial
+// state). A block a stop request left unstepped (kNotStepped) is not reset
+// either (nothing of it changes), but its outputs are written.
+struct StepIo {
+  std::span<const std::uint8_t> reset_mask;  // [world], or empty: no resets
+  std::span<const float> reset_states;       // [world][body][13]; needs reset_mask
+  std::span<float> state_out;                // [world][body][13] (GetState)
+  std::span<float> joints_out;  // [world][JointCoordinatesPerWorld()] (GetJointCoordinates)
+};
+
 class Batch {
  public:
   // Throws SceneError naming the body or constraint and field of a bad scene.
@@ -159,6 +189,9 @@ class Batch {
   // blocks already started finish their step. Returns whether every world
   // stepped.
   bool Step(const StepSettings& settings, std::stop_token stop);
+  // Step with the resets and observation reads of an RL loop done inside
+  // the step's pass over each block (StepIo above). Returns as Step(stop).
+  bool Step(const StepSettings& settings, const StepIo& io, std::stop_token stop = {});
 
   // ---- state, world-major: [world][body][13] (see StateField)
   void GetState(std::span<float> out) const;

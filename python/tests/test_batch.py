@@ -286,19 +286,26 @@ def test_constraint_errors(cartpole):
     assert cartpole.constraint_error(5, 1) >= 0 and cartpole.constraint_velocity_error(5, 1) >= 0
 
 
-def test_step_releases_the_gil_and_concurrent_use_raises():
+@pytest.mark.parametrize("fused", [False, True])
+def test_step_releases_the_gil_and_concurrent_use_raises(fused):
     """A step on one thread runs while Python goes on on another; a call on
-    the same Batch from that other thread meanwhile raises RuntimeError."""
+    the same Batch from that other thread meanwhile raises RuntimeError.
+    The same with the fused step's resets and outputs."""
     batch = mw.Batch(mw.make_scene("chain64"), 4096, threads=1)
     slow = mw.StepSettings(velocity_iterations=200, substeps=4)
     started, done = threading.Event(), threading.Event()
     errors = []
     out = np.empty((4096, batch.num_bodies, 13), np.float32)
+    outputs = {}
+    if fused:
+        outputs = {"reset_mask": np.arange(4096) % 7 == 0,
+                   "state_out": np.empty_like(out),
+                   "joints_out": np.empty((4096, batch.joint_coordinates_per_world), np.float32)}
 
     def step():
         started.set()
         try:
-            batch.step(slow)
+            batch.step(slow, **outputs)
         except Exception as error:  # noqa: BLE001 - reported below
             errors.append(error)
         done.set()
@@ -318,3 +325,77 @@ def test_step_releases_the_gil_and_concurrent_use_raises():
     assert refused is not None, "the step ended before the other thread could run"
     assert "thread" in str(refused)
     batch.get_state(out=out)  # fine again afterwards
+
+
+@pytest.mark.parametrize("threads", [1, 2])
+@pytest.mark.parametrize("with_states", [False, True])
+def test_fused_step_gives_the_bits_of_separate_calls(threads, with_states):
+    """step(reset_mask=, reset_states=, state_out=, joints_out=) equals step();
+    reset(mask) or reset_to(mask, states); get_state(); get_joint_coordinates()
+    bit for bit, step after step (1040 worlds: enough blocks for threads)."""
+    worlds = 1040
+    scene = mw.make_scene("cartpole")
+    separate = mw.Batch(scene, worlds, threads=threads)
+    fused = mw.Batch(scene, worlds, threads=threads)
+    rng = np.random.default_rng(5)
+    state_out = np.empty((worlds, 3, 13), np.float32)
+    joints_out = np.empty((worlds, fused.joint_coordinates_per_world), np.float32)
+    for step in range(20):
+        forces = random_cart_forces(rng, worlds)
+        done = rng.random(worlds) < 0.1
+        states = separate.get_state()
+        states[:, :, 0] += np.float32(0.01)
+        for batch in (separate, fused):
+            batch.set_body_forces(CART, forces)
+        separate.step()
+        if with_states:
+            separate.reset_to(done, states)
+            fused.step(reset_mask=done, reset_states=states, state_out=state_out,
+                       joints_out=joints_out)
+        else:
+            separate.reset(done)
+            fused.step(reset_mask=done, state_out=state_out, joints_out=joints_out)
+        assert_same_bits(state_out, separate.get_state())
+        assert_same_bits(joints_out, separate.get_joint_coordinates())
+        np.testing.assert_array_equal(fused.health, separate.health)
+    assert fused.snapshot().bytes() == separate.snapshot().bytes()
+
+
+def test_fused_step_resets_after_the_step_for_autoreset(cartpole):
+    """The worlds in reset_mask are observed at their initial state (the new
+    episode's first observation), as Gymnasium's next-step autoreset wants."""
+    initial = cartpole.get_state()
+    for _ in range(5):
+        cartpole.step()
+    done = np.zeros(WORLDS, bool)
+    done[[3, 40]] = True
+    state_out = np.empty_like(initial)
+    cartpole.step(reset_mask=done, state_out=state_out)
+    assert_same_bits(state_out[done], initial[done])
+    assert not np.array_equal(bits(state_out[~done]), bits(initial[~done]))
+
+
+def test_fused_step_flags_a_nan_world_and_no_other():
+    """A NaN action in world 9 under the fused step: world 9 is flagged, every
+    other world's observation has the bits of a clean batch; resetting world 9
+    in a later step clears its flag."""
+    scene = mw.make_scene("cartpole")
+    clean, dirty = mw.Batch(scene, WORLDS), mw.Batch(scene, WORLDS)
+    rng = np.random.default_rng(2)
+    obs_clean, obs_dirty = (np.empty((WORLDS, 3, 13), np.float32) for _ in range(2))
+    no_reset, reset_9 = np.zeros(WORLDS, bool), np.zeros(WORLDS, bool)
+    reset_9[9] = True
+    others = np.arange(WORLDS) != 9
+    for step in range(5):
+        forces = random_cart_forces(rng, WORLDS)
+        clean.set_body_forces(CART, forces)
+        if step == 1:
+            forces[9, 0] = np.nan
+        dirty.set_body_forces(CART, forces)
+        clean.step(reset_mask=no_reset, state_out=obs_clean)
+        dirty.step(reset_mask=reset_9 if step == 3 else no_reset, state_out=obs_dirty)
+        assert_same_bits(obs_dirty[others], obs_clean[others])
+        assert not dirty.health[others].any()
+        if step == 1:
+            assert dirty.health[9] & mw.WorldHealthBits.NON_FINITE_INPUT
+    assert dirty.health[9] == 0 and np.isfinite(obs_dirty[9]).all()

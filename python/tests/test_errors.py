@@ -59,6 +59,10 @@ ARRAY_ARGUMENTS = [
     ("factor", (WORLDS,), lambda b, a: b.set_gravity_factor(CART, a)),
     ("angular", (WORLDS,), lambda b, a: b.set_damping(CART, 0.1, a)),
     ("max", (WORLDS,), lambda b, a: b.set_limits(0, -1.0, a)),
+    ("reset_states", S,
+     lambda b, a: b.step(reset_mask=np.ones(WORLDS, bool), reset_states=a)),
+    ("state_out", S, lambda b, a: b.step(state_out=a)),
+    ("joints_out", (WORLDS, 5), lambda b, a: b.step(joints_out=a)),
 ]
 IDS = [f"{i}-{name}" for i, (name, _, _) in enumerate(ARRAY_ARGUMENTS)]
 
@@ -110,6 +114,7 @@ MASK_CALLS = [
     lambda b, m: b.reset_to(m, b.get_state()),
     lambda b, m: b.restore(b.snapshot(), m),
     lambda b, m: b.set_gravity_factor(CART, 0.5, mask=m),
+    lambda b, m: b.step(reset_mask=m),
 ]
 
 
@@ -249,3 +254,24 @@ def test_snapshots_of_another_batch_are_refused(stepped_cartpole):
     assert_refused(b, lambda: b.restore(chain), ValueError)
     with pytest.raises(ValueError, match="snapshot"):
         mw.BatchSnapshot.from_bytes(b"not a snapshot at all, clearly")
+
+
+def test_a_refused_step_writes_no_output(stepped_cartpole):
+    """One bad argument of step(): the batch and every other output array
+    are left as they were."""
+    b = stepped_cartpole
+    state_out = np.full(S, 7.0, np.float32)
+    joints_out = np.full((WORLDS, 5), 7.0, np.float32)
+    zero_rotation = b.get_state()
+    zero_rotation[9, CART, 3:7] = 0.0
+    assert_refused(b, lambda: b.step(state_out=state_out, joints_out=np.ones((WORLDS, 4),
+                                                                            np.float32)),
+                   ValueError, "joints_out: expected shape (64, 5), got (64, 4)")
+    assert_refused(b, lambda: b.step(reset_states=b.get_state(), state_out=state_out),
+                   ValueError, "reset_states: given without a reset_mask")
+    assert_refused(b, lambda: b.step(reset_mask=np.ones(WORLDS, bool), reset_states=zero_rotation,
+                                     state_out=state_out, joints_out=joints_out),
+                   ValueError, "'cart' in world 9: rotation is zero")
+    assert_refused(b, lambda: b.step(mw.StepSettings(substeps=0), state_out=state_out,
+                                     joints_out=joints_out), ValueError, "substeps")
+    assert np.all(state_out == 7.0) and np.all(joints_out == 7.0)

@@ -186,15 +186,23 @@ class ManyWorldsVectorEnv(_compat.VectorEnvBase):
                 "were not reset: call reset(options={'reset_mask': mask}) first")
         # NEXT_STEP: the worlds done last step are reset now; their action is
         # ignored (they step with zeros, then are overwritten by the reset).
+        # The reset is done by the step itself, after each block's step and
+        # before its observations are read (Batch.step(reset_mask=...)): the
+        # reset states and task variables are drawn first, the per-world
+        # randomisation after, in the generator order of a separate reset.
         pending = self._autoreset_envs.copy() if mode == AutoresetMode.NEXT_STEP else None
-        if pending is not None and pending.any():
+        resetting = pending is not None and pending.any()
+        reset_states = None
+        if resetting:
             actions = actions.copy()
             actions[pending] = 0.0
+            reset_states = self._draw_reset(pending)
 
         self._apply_actions(actions)
-        self.batch.step(self.step_settings)
+        self._step_batch(pending if resetting else None, reset_states)
         self._elapsed += 1
-        self._read_state()
+        if resetting:
+            self._finish_reset(pending, {})
 
         unhealthy = self.batch.health != 0
         if pending is not None:
@@ -212,10 +220,7 @@ class ManyWorldsVectorEnv(_compat.VectorEnvBase):
             info["_unhealthy"] = unhealthy.copy()
 
         if mode == AutoresetMode.NEXT_STEP:
-            if pending.any():
-                self._reset_worlds(pending, {})
-                obs = self._observe()
-                obs[unhealthy] = 0.0  # (worlds that broke this step, not reset yet)
+            if resetting:  # obs above is already their new episode's first
                 reward[pending] = 0.0
                 terminated[pending] = False
                 truncated[pending] = False
@@ -255,20 +260,38 @@ class ManyWorldsVectorEnv(_compat.VectorEnvBase):
         if self.needs_state:
             self.batch.get_state(out=self._state)
 
+    def _step_batch(self, reset_mask, reset_states):
+        """One step of every world; the observations (and the resets of
+        reset_mask, if any) done by the step in the same pass over the worlds."""
+        self.batch.step(self.step_settings, reset_mask=reset_mask, reset_states=reset_states,
+                        joints_out=self._joints,
+                        state_out=self._state if self.needs_state else None)
+
     def _reset_worlds(self, mask, overrides):
         """Resets the worlds where mask is True: initial states and task
         variables drawn from the generator, randomisation re-applied."""
+        states = self._draw_reset(mask)
+        self.batch.reset_to(mask, states)
+        self._finish_reset(mask, overrides)
+        self._read_state()
+
+    def _draw_reset(self, mask):
+        """The first half of a reset of the worlds where mask is True: their
+        initial body states [num_envs, bodies, 13] (other rows unread) and
+        task variables, drawn from the generator."""
         rng = self.np_random
         idx = np.flatnonzero(mask)
         states = np.empty((self.num_envs, self.batch.num_bodies, 13), np.float32)
         states[:] = self._initial_state
         states[idx] = self._reset_states(idx, rng)
         self._on_reset(idx, rng)
-        mask_u8 = mask.astype(np.uint8)
-        self.batch.reset_to(mask_u8, states)
-        self._randomize(mask, mask_u8, rng, overrides)
-        self._elapsed[idx] = 0
-        self._read_state()
+        return states
+
+    def _finish_reset(self, mask, overrides):
+        """The second half, once the batch has reset the worlds: per-world
+        randomisation (a reset restored the scene's parameters), episode clocks."""
+        self._randomize(mask, mask.astype(np.uint8), self.np_random, overrides)
+        self._elapsed[mask] = 0
 
     def _randomize(self, mask, mask_u8, rng, overrides):
         ranges = {**self.randomization, **overrides}
