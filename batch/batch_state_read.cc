@@ -70,7 +70,12 @@ void ReadStateColumnsOfBlock(const Batch::Impl& batch, std::size_t block, std::s
   const auto [block_first, block_end] = batch.WorldsOf(block);
   for (std::size_t b = 0; b < bodies; ++b) {
     const BodyLanes& body = batch.In<BodyLanes>(block_first, batch.plan_.bodies[b].offset);
-    TransposeColumns<kCount>(body.position.x.lanes + first * kLaneWidth, block_end - block_first,
+    // The body's 13 columns as one float run (the static_assert above): the
+    // pointer comes from the whole BodyLanes, not from its first LaneArray's
+    // 16 floats, past whose end `first * 16` may point (undefined behaviour
+    // that UBSan reports, which the fuzzer found through GetField).
+    const float* columns = reinterpret_cast<const float*>(&body) + first * kLaneWidth;
+    TransposeColumns<kCount>(columns, block_end - block_first,
                              out + (block_first * bodies + b) * kCount, bodies * kCount);
   }
 }
