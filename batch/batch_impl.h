@@ -182,6 +182,8 @@ class Batch::Impl {
   // out[world][layout.per_world] (batch_joints.cc).
   void ReadStateOfBlock(std::size_t block, float* out) const;
   JointLayout JointCoordinateLayout() const;
+  void ReadJointCoordinatesOfWorld(std::size_t world, const JointLayout& layout,
+                                   float* row) const;
   void ReadJointCoordinatesOfBlock(std::size_t block, const JointLayout& layout,
                                    float* out) const;
 

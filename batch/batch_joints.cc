@@ -49,13 +49,18 @@ Batch::Impl::JointLayout Batch::Impl::JointCoordinateLayout() const {
   return layout;
 }
 
+void Batch::Impl::ReadJointCoordinatesOfWorld(std::size_t world, const JointLayout& layout,
+                                              float* row) const {
+  for (std::size_t i = 0; i < layout.constraints.size(); ++i) {
+    JointCoordinatesOfLane(plan_, Block(world / kLaneWidth), Lane(world), layout.constraints[i],
+                           row + layout.offsets[i]);
+  }
+}
+
 void Batch::Impl::ReadJointCoordinatesOfBlock(std::size_t block, const JointLayout& layout,
                                               float* out) const {
   for (auto [world, end] = WorldsOf(block); world < end; ++world) {
-    for (std::size_t i = 0; i < layout.constraints.size(); ++i) {
-      JointCoordinatesOfLane(plan_, Block(block), Lane(world), layout.constraints[i],
-                             out + world * layout.per_world + layout.offsets[i]);
-    }
+    ReadJointCoordinatesOfWorld(world, layout, out + world * layout.per_world);
   }
 }
 
@@ -65,6 +70,14 @@ void Batch::GetJointCoordinates(std::span<float> out) const {
   batch.CheckSize(out.size(), batch.world_count_ * layout.per_world, "GetJointCoordinates");
   batch.ForEachBlock(
       [&](std::size_t block) { batch.ReadJointCoordinatesOfBlock(block, layout, out.data()); });
+}
+
+void Batch::GetWorldJointCoordinates(std::size_t world, std::span<float> out) const {
+  const Impl& batch = impl();
+  batch.CheckWorld(world);
+  const Impl::JointLayout layout = batch.JointCoordinateLayout();
+  batch.CheckSize(out.size(), layout.per_world, "GetWorldJointCoordinates");
+  batch.ReadJointCoordinatesOfWorld(world, layout, out.data());
 }
 
 std::size_t Batch::MotorForceCount(std::size_t constraint) const {

@@ -99,6 +99,14 @@ void Batch::GetState(std::span<float> out) const {
   ReadStateColumns<kStateFloatsPerBody>(batch, 0, out.data());
 }
 
+void Batch::GetWorldState(std::size_t world, std::span<float> out) const {
+  const Impl& batch = impl();
+  batch.CheckWorld(world);
+  const std::size_t bodies = batch.plan_.bodies.size();
+  batch.CheckSize(out.size(), bodies * kStateFloatsPerBody, "GetWorldState");
+  for (std::size_t b = 0; b < bodies; ++b) batch.ReadState(world, b, &out[b * kStateFloatsPerBody]);
+}
+
 void Batch::GetField(StateField field, std::span<float> out) const {
   const Impl& batch = impl();
   const std::size_t size = StateFieldSize(field);

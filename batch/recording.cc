@@ -146,8 +146,8 @@ struct Recorder::State {
   std::size_t time_array = 0, step_array = 0, position_array = 0, rotation_array = 0,
               coordinate_array = 0, health_array = 0;
   std::size_t frames = 0;
-  // Reused between frames: the whole batch's read-outs and one frame's rows.
-  std::vector<float> state, all_coordinates, positions, rotations, coordinate_rows;
+  // Reused between frames: one world's state and one frame's rows.
+  std::vector<float> state, positions, rotations, coordinate_rows;
   std::vector<std::uint8_t> health;
 
   State(const std::string& path, const RecorderOptions& options)
@@ -244,26 +244,26 @@ void Recorder::Capture(const Batch& batch, double time, std::int64_t step) {
         "Recorder::Capture: the batch is not the recorded scene's (bodies, constraints, joint "
         "coordinates or world count differ)");
   }
+  // Only the recorded worlds are read: a frame of 3 worlds costs the same
+  // whether the batch holds 16 worlds or 16384.
   const std::size_t B = s.bodies, J = s.coordinates;
-  s.state.resize(batch.world_count() * B * kStateFloatsPerBody);
-  s.all_coordinates.resize(batch.world_count() * J);
-  batch.GetState(s.state);
-  batch.GetJointCoordinates(s.all_coordinates);
+  s.state.resize(B * kStateFloatsPerBody);
+  s.coordinate_rows.resize(s.worlds.size() * J);
   const std::span<const std::uint8_t> health = batch.WorldHealth();
   s.positions.clear();
   s.rotations.clear();
-  s.coordinate_rows.clear();
   s.health.clear();
-  for (const std::size_t world : s.worlds) {
+  for (std::size_t i = 0; i < s.worlds.size(); ++i) {
+    const std::size_t world = s.worlds[i];
+    batch.GetWorldState(world, s.state);
     for (std::size_t b = 0; b < B; ++b) {
-      const float* body = s.state.data() + (world * B + b) * kStateFloatsPerBody;
+      const float* body = s.state.data() + b * kStateFloatsPerBody;
       const float* position = body + StateFieldOffset(StateField::kPosition);
       const float* rotation = body + StateFieldOffset(StateField::kRotation);
       s.positions.insert(s.positions.end(), position, position + 3);
       s.rotations.insert(s.rotations.end(), rotation, rotation + 4);
     }
-    const float* coordinates = s.all_coordinates.data() + world * J;
-    s.coordinate_rows.insert(s.coordinate_rows.end(), coordinates, coordinates + J);
+    batch.GetWorldJointCoordinates(world, std::span(s.coordinate_rows).subspan(i * J, J));
     s.health.push_back(health.empty() ? 0 : health[world]);
   }
   npz::StreamingNpzWriter& w = s.writer;

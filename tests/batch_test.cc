@@ -556,6 +556,33 @@ TEST(BatchTest, EveryFieldIsItsColumnsOfTheState) {
   }
 }
 
+// One world's reads are bit for bit its rows of the whole-batch reads (the
+// recorder reads only the worlds it records this way); a world past the end
+// and a wrong size are refused.
+TEST(BatchTest, OneWorldsReadsAreItsRowsOfTheBatchReads) {
+  Batch batch(MakeScene("ragdoll"), 21);
+  for (int i = 0; i < 5; ++i) batch.Step({});
+  const std::size_t state_row = batch.body_count() * kStateFloatsPerBody;
+  const std::size_t joint_row = batch.JointCoordinatesPerWorld();
+  std::vector<float> state(batch.world_count() * state_row), joints(batch.world_count() * joint_row);
+  batch.GetState(state);
+  batch.GetJointCoordinates(joints);
+  std::vector<float> world_state(state_row), world_joints(joint_row);
+  for (std::size_t w = 0; w < batch.world_count(); ++w) {
+    batch.GetWorldState(w, world_state);
+    batch.GetWorldJointCoordinates(w, world_joints);
+    ASSERT_EQ(std::memcmp(world_state.data(), &state[w * state_row], state_row * sizeof(float)), 0)
+        << "state of world " << w;
+    ASSERT_EQ(std::memcmp(world_joints.data(), &joints[w * joint_row], joint_row * sizeof(float)),
+              0)
+        << "joint coordinates of world " << w;
+  }
+  EXPECT_THROW(batch.GetWorldState(21, world_state), std::out_of_range);
+  EXPECT_THROW(batch.GetWorldJointCoordinates(21, world_joints), std::out_of_range);
+  world_state.pop_back();
+  EXPECT_THROW(batch.GetWorldState(0, world_state), std::invalid_argument);
+}
+
 TEST(BatchTest, PerWorldParametersChangeOnlyTheirWorld) {
   Scene scene = HingeScene();
   Hinge(scene).limits_min = -0.5f;

@@ -205,6 +205,9 @@ class Batch {
   void SetState(std::span<const float> in, std::span<const std::uint8_t> world_mask = {});
   // One field of every world and body: [world][body][StateFieldSize(field)].
   void GetField(StateField field, std::span<float> out) const;
+  // One world's state, [body][13]: the same bits as its rows of GetState,
+  // without reading every world (a recorder of a few worlds, a debugger).
+  void GetWorldState(std::size_t world, std::span<float> out) const;
   void SetField(StateField field, std::span<const float> in);
 
   // Back to the scene's initial state (state, accumulated impulses, motor
@@ -226,6 +229,8 @@ class Batch {
   void GetJointCoordinates(std::size_t constraint, std::span<float> out) const;
   std::size_t JointCoordinatesPerWorld() const;
   void GetJointCoordinates(std::span<float> out) const;
+  // One world's row of GetJointCoordinates(out): [JointCoordinatesPerWorld()].
+  void GetWorldJointCoordinates(std::size_t world, std::span<float> out) const;
   // The force (N) or torque (N m) each motor or friction row of a constraint
   // applied in the last substep of the last Step, [world][MotorForceCount(c)]:
   // 1 for a hinge, slider or path drive, 3 for swing-twist rotation drives
