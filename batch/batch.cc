@@ -1,5 +1,6 @@
-// Batch: the blocks of worlds, the TBB loop over them, state and actions
-// (per-world parameters: batch_parameters.cc; snapshots: batch_snapshot.cc;
+// Batch: the blocks of worlds, the TBB loop over them, state and resets
+// (actions: batch_actions.cc; per-world parameters: batch_parameters.cc;
+// snapshots: batch_snapshot.cc;
 // state read-outs: batch_state_read.cc; the fused step's resets and
 // outputs: batch_fused_io.cc).
 
@@ -149,6 +150,7 @@ void Batch::Impl::Step(const StepSettings& settings, std::stop_token stop, const
   const bool stoppable = stop.stop_possible();
   auto step_blocks = [&](const tbb::blocked_range<std::size_t>& range) {
     for (std::size_t block = range.begin(); block != range.end(); ++block) {
+      if (io != nullptr) StartBlock(block, *io);
       if (stoppable && stop.stop_requested()) {
         for (auto [world, end] = WorldsOf(block); world < end; ++world) {
           health_[world] = kNotStepped;
@@ -340,23 +342,6 @@ void Batch::Impl::CheckSize(std::size_t got, std::size_t want, const char* what)
   }
 }
 
-// Block by block, the block's lane arrays located once (RL loops write
-// their actions every step: SetForces(body) of 4096 worlds is part of the
-// loop's cost over Step).
-void Batch::Impl::WriteLanes(std::size_t offset, std::span<const float> per_world) {
-  for (std::size_t block = 0; block < block_count_; ++block) {
-    Vec3Lanes& v = At<Vec3Lanes>(Block(block), offset);
-    for (auto [world, end] = WorldsOf(block); world < end; ++world) {
-      const std::size_t l = Lane(world);
-      const float* value = per_world.data() + world * 3;
-      v.x[l] = value[0];
-      v.y[l] = value[1];
-      v.z[l] = value[2];
-      NoteInput(world, value[0], value[1], value[2]);
-    }
-  }
-}
-
 // Every LaneArray of the world's block, lane `world % 16`, from the initial block.
 void Batch::Impl::ResetWorld(std::size_t world) {
   const std::size_t lane = Lane(world);
@@ -399,51 +384,6 @@ void Batch::Impl::ResetWorldsOfBlock(std::size_t block, std::span<const std::uin
     health_[w] = 0;
     pending_input_[w] = 0;
   }
-}
-
-// Swing-twist and six-DOF drives have one motor per axis; the single-value
-// setters of hinges and sliders would not say which.
-void Batch::Impl::RefuseMultiAxis(const ConstraintPlan& c, const char* what) {
-  if (c.type == ConstraintType::kSwingTwist || c.type == ConstraintType::kSixDof) {
-    throw SceneError(c.label + ": " + what + " of a " + ConstraintTypeName(c.type) +
-                     " constraint is set per axis (SetTargetOrientation, "
-                     "SetTargetAngularVelocity, SetTargetTranslation, "
-                     "SetTargetLinearVelocity; other settings in the scene)");
-  }
-}
-
-RotationDriveLanes& Batch::Impl::RotationDrive(std::size_t world, std::size_t constraint,
-                                               const char* what) {
-  CheckWorld(world);
-  const ConstraintPlan& c = Constraint(constraint);
-  if (!c.has_rotation_drives()) {
-    throw SceneError(c.label + ": " + what +
-                     " needs rotation motors or friction (a swing-twist or six-DOF "
-                     "constraint with a motor state or max friction)");
-  }
-  return In<RotationDriveLanes>(world, c.rotation_drive_offset);
-}
-
-LinearMotorLanes* Batch::Impl::TranslationDrives(std::size_t world, std::size_t constraint,
-                                                 const char* what) {
-  CheckWorld(world);
-  const ConstraintPlan& c = Constraint(constraint);
-  if (c.type != ConstraintType::kSixDof || !c.has_motor()) {
-    throw SceneError(c.label + ": " + what +
-                     " needs a six-DOF constraint with translation motors or friction");
-  }
-  return &In<LinearMotorLanes>(world, c.motor_offset);
-}
-
-float Batch::Impl::ClampedTarget(std::size_t world, const ConstraintPlan& c,
-                                 float position) const {
-  if (!c.has_limits()) return position;
-  if (c.type == ConstraintType::kHinge) {
-    const auto& limit = In<AngularLimitLanes>(world, c.limit_offset);
-    return std::clamp(position, limit.min[Lane(world)], limit.max[Lane(world)]);
-  }
-  const auto& limit = In<LinearLimitLanes>(world, c.limit_offset);
-  return std::clamp(position, limit.min[Lane(world)], limit.max[Lane(world)]);
 }
 
 // ---- the public API
@@ -535,138 +475,6 @@ void Batch::ResetTo(std::span<const std::uint8_t> world_mask, std::span<const fl
   batch.CheckSize(state.size(), world_count() * body_count() * kStateFloatsPerBody, "ResetTo");
   batch.CheckStates(state, world_mask);
   batch.ResetWorlds(world_mask, state);
-}
-
-void Batch::SetForce(std::size_t world, std::size_t body, Float3 force) {
-  BodyMotionLanes& m = impl().Motion(world, body, "a force");
-  const std::size_t l = Impl::Lane(world);
-  m.force.x[l] = force[0];
-  m.force.y[l] = force[1];
-  m.force.z[l] = force[2];
-  impl().NoteInput(world, force[0], force[1], force[2]);
-}
-
-void Batch::SetTorque(std::size_t world, std::size_t body, Float3 torque) {
-  BodyMotionLanes& m = impl().Motion(world, body, "a torque");
-  const std::size_t l = Impl::Lane(world);
-  m.torque.x[l] = torque[0];
-  m.torque.y[l] = torque[1];
-  m.torque.z[l] = torque[2];
-  impl().NoteInput(world, torque[0], torque[1], torque[2]);
-}
-
-void Batch::SetForces(std::span<const float> forces) {
-  const Impl::Exclusive exclusive(impl(), "SetForces");
-  const std::size_t bodies = body_count();
-  impl().CheckSize(forces.size(), world_count() * bodies * 3, "SetForces");
-  for (std::size_t w = 0; w < world_count(); ++w) {
-    for (std::size_t b = 0; b < bodies; ++b) {
-      if (impl().plan_.bodies[b].motion_offset == kAbsent) continue;
-      const float* f = forces.data() + (w * bodies + b) * 3;
-      SetForce(w, b, {f[0], f[1], f[2]});
-    }
-  }
-}
-
-void Batch::SetTorques(std::span<const float> torques) {
-  const Impl::Exclusive exclusive(impl(), "SetTorques");
-  const std::size_t bodies = body_count();
-  impl().CheckSize(torques.size(), world_count() * bodies * 3, "SetTorques");
-  for (std::size_t w = 0; w < world_count(); ++w) {
-    for (std::size_t b = 0; b < bodies; ++b) {
-      if (impl().plan_.bodies[b].motion_offset == kAbsent) continue;
-      const float* t = torques.data() + (w * bodies + b) * 3;
-      SetTorque(w, b, {t[0], t[1], t[2]});
-    }
-  }
-}
-
-void Batch::SetForces(std::size_t body, std::span<const float> per_world) {
-  const Impl::Exclusive exclusive(impl(), "SetForces");
-  impl().Motion(0, body, "a force");
-  impl().CheckSize(per_world.size(), world_count() * 3, "SetForces(body)");
-  impl().WriteLanes(impl().plan_.bodies[body].motion_offset + offsetof(BodyMotionLanes, force),
-                    per_world);
-}
-
-void Batch::SetTorques(std::size_t body, std::span<const float> per_world) {
-  const Impl::Exclusive exclusive(impl(), "SetTorques");
-  impl().Motion(0, body, "a torque");
-  impl().CheckSize(per_world.size(), world_count() * 3, "SetTorques(body)");
-  impl().WriteLanes(impl().plan_.bodies[body].motion_offset + offsetof(BodyMotionLanes, torque),
-                    per_world);
-}
-
-void Batch::SetTargetVelocity(std::size_t world, std::size_t constraint, float velocity) {
-  impl().WithMotor(world, constraint, "a target velocity",
-                         [&](auto& motor, const ConstraintPlan&) {
-                           motor.target_velocity[Impl::Lane(world)] = velocity;
-                         });
-  impl().NoteInput(world, velocity);
-}
-
-void Batch::SetTargetPosition(std::size_t world, std::size_t constraint, float position) {
-  impl().WithMotor(world, constraint, "a target position",
-                         [&](auto& motor, const ConstraintPlan& c) {
-                           motor.target_position[Impl::Lane(world)] =
-                               impl().ClampedTarget(world, c, position);
-                         });
-  impl().NoteInput(world, position);
-}
-
-void Batch::SetTargetOrientation(std::size_t world, std::size_t constraint,
-                                 Quaternion orientation) {
-  RotationDriveLanes& drive = impl().RotationDrive(world, constraint, "a target orientation");
-  const double length = std::sqrt(double(orientation[0]) * orientation[0] +
-                                  double(orientation[1]) * orientation[1] +
-                                  double(orientation[2]) * orientation[2] +
-                                  double(orientation[3]) * orientation[3]);
-  if (length == 0.0) {
-    throw SceneError(impl().Constraint(constraint).label +
-                     ": target orientation is a zero quaternion");
-  }
-  const std::size_t l = Impl::Lane(world);
-  drive.target_orientation.x[l] = float(orientation[0] / length);
-  drive.target_orientation.y[l] = float(orientation[1] / length);
-  drive.target_orientation.z[l] = float(orientation[2] / length);
-  drive.target_orientation.w[l] = float(orientation[3] / length);
-  impl().NoteInput(world, orientation[0], orientation[1], orientation[2], orientation[3]);
-}
-
-void Batch::SetTargetAngularVelocity(std::size_t world, std::size_t constraint,
-                                     Float3 angular_velocity) {
-  RotationDriveLanes& drive =
-      impl().RotationDrive(world, constraint, "a target angular velocity");
-  for (int i = 0; i < 3; ++i) {
-    drive.rows[i].target_velocity[Impl::Lane(world)] = angular_velocity[i];
-  }
-  impl().NoteInput(world, angular_velocity[0], angular_velocity[1], angular_velocity[2]);
-}
-
-void Batch::SetTargetTranslation(std::size_t world, std::size_t constraint,
-                                 Float3 translation) {
-  LinearMotorLanes* drives = impl().TranslationDrives(world, constraint, "a target translation");
-  for (int i = 0; i < 3; ++i) drives[i].target_position[Impl::Lane(world)] = translation[i];
-  impl().NoteInput(world, translation[0], translation[1], translation[2]);
-}
-
-void Batch::SetTargetLinearVelocity(std::size_t world, std::size_t constraint, Float3 velocity) {
-  LinearMotorLanes* drives =
-      impl().TranslationDrives(world, constraint, "a target linear velocity");
-  for (int i = 0; i < 3; ++i) drives[i].target_velocity[Impl::Lane(world)] = velocity[i];
-  impl().NoteInput(world, velocity[0], velocity[1], velocity[2]);
-}
-
-void Batch::SetTargetVelocities(std::size_t constraint, std::span<const float> per_world) {
-  const Impl::Exclusive exclusive(impl(), "SetTargetVelocities");
-  impl().CheckSize(per_world.size(), world_count(), "SetTargetVelocities");
-  for (std::size_t w = 0; w < world_count(); ++w) SetTargetVelocity(w, constraint, per_world[w]);
-}
-
-void Batch::SetTargetPositions(std::size_t constraint, std::span<const float> per_world) {
-  const Impl::Exclusive exclusive(impl(), "SetTargetPositions");
-  impl().CheckSize(per_world.size(), world_count(), "SetTargetPositions");
-  for (std::size_t w = 0; w < world_count(); ++w) SetTargetPosition(w, constraint, per_world[w]);
 }
 
 std::string Batch::Plan() const { return Plan(impl().last_settings_); }

@@ -1,15 +1,21 @@
-// Batch::Step(settings, io): the resets and observation reads of an RL loop
-// done inside the step's own pass over each block (batch.h, StepIo).
+// Batch::Step(settings, io): the actions, resets and observation reads of
+// an RL loop done inside the step's own pass over each block (batch.h,
+// StepIo).
 //
-// Why: as separate calls, Reset and GetState each pass over every block
-// again after Step. At 4096 cartpoles that was a fifth of a step on one
+// Why: as separate calls, SetForces, Reset and GetState each pass over
+// every block again, before or after Step. At 4096 cartpoles that was a fifth of a step on one
 // thread and, with two threads, nearly half (docs/python.md, "Overhead of a
 // Python step loop"), because each call's blocks are split between the two
 // cores differently from the step's and come from the other core's cache.
 // Here each block is reset and read in the task that just stepped it.
 //
+// Actions written from the calling thread also slowed the step itself: on
+// two threads, set_body_forces before each step made it 22 us slower at
+// 4096 cartpoles (docs/python.md), half of the blocks it dirtied being
+// stepped by the other core.
+//
 // Bit-identity with the separate calls holds by construction: the same
-// functions (ResetWorldsOfBlock, ReadStateOfBlock,
+// functions (WriteActionOfBlock, ResetWorldsOfBlock, ReadStateOfBlock,
 // ReadJointCoordinatesOfBlock) run on the same block in the same order, and
 // a world's result never depends on other worlds or on the thread.
 
@@ -18,6 +24,7 @@
 #include <span>
 #include <stdexcept>
 #include <stop_token>
+#include <string>
 
 #include "batch/batch_impl.h"
 #include "manyworlds/batch.h"
@@ -27,6 +34,10 @@ namespace manyworlds {
 Batch::Impl::BlockIo Batch::Impl::CheckedBlockIo(const StepIo& io) const {
   const std::size_t state_floats = world_count_ * plan_.bodies.size() * kStateFloatsPerBody;
   BlockIo checked;
+  for (std::size_t i = 0; i < io.actions.size(); ++i) {
+    const std::string what = "Step actions[" + std::to_string(i) + "]";
+    checked.actions.push_back(CheckAction(io.actions[i], what.c_str()));
+  }
   if (!io.joints_out.empty()) checked.joints = JointCoordinateLayout();
   if (!io.reset_mask.empty()) CheckSize(io.reset_mask.size(), world_count_, "Step reset_mask");
   if (!io.reset_states.empty()) {
@@ -41,12 +52,19 @@ Batch::Impl::BlockIo Batch::Impl::CheckedBlockIo(const StepIo& io) const {
   if (!io.joints_out.empty()) {
     CheckSize(io.joints_out.size(), world_count_ * checked.joints.per_world, "Step joints_out");
   }
-  checked.any = !io.reset_mask.empty() || !io.state_out.empty() || !io.joints_out.empty();
+  checked.any = !io.actions.empty() || !io.reset_mask.empty() || !io.state_out.empty() || !io.joints_out.empty();
   checked.reset_mask = io.reset_mask;
   checked.reset_states = io.reset_states;
   checked.state_out = io.state_out.empty() ? nullptr : io.state_out.data();
   checked.joints_out = io.joints_out.empty() ? nullptr : io.joints_out.data();
   return checked;
+}
+
+// Runs in the task that steps the block, before it does (or skips it for a
+// stop request: the actions are then there for its next step, as when
+// written by the separate calls).
+void Batch::Impl::StartBlock(std::size_t block, const BlockIo& io) {
+  for (const CheckedAction& action : io.actions) WriteActionOfBlock(block, action);
 }
 
 // Runs in the task that stepped the block (or skipped it for a stop

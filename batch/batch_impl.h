@@ -73,6 +73,28 @@ class Batch::Impl {
     });
   }
 
+  // ---- actions written block by block (batch_actions.cc), by the separate
+  // calls (SetForces(body), SetTargetVelocities, ...) over every block and
+  // by Step(settings, io) in each block's task: one writer, so the two give
+  // the same bits. A StepAction checked once per call: where its LaneArray
+  // starts in a block, and the constraint whose limits clamp a position.
+  struct CheckedAction {
+    ActionKind kind;
+    std::size_t offset;  // bytes, in a block: Vec3Lanes or one LaneArray
+    const ConstraintPlan* clamp_into_limits = nullptr;
+    const float* per_world;
+  };
+  // Refuses (SceneError, std::out_of_range or std::invalid_argument naming
+  // `what`) an action the separate call would refuse; writes nothing.
+  CheckedAction CheckAction(const StepAction& action, const char* what) const;
+  void WriteActionOfBlock(std::size_t block, const CheckedAction& action);
+  void WriteAction(const CheckedAction& action) {
+    for (std::size_t block = 0; block < block_count_; ++block) WriteActionOfBlock(block, action);
+  }
+  // The constraint's plan if it has a single motor (hinge, slider, path),
+  // else SceneError naming it and `what`.
+  const ConstraintPlan& SingleMotor(std::size_t constraint, const char* what) const;
+
   // ---- what a Step(settings, io) does per block besides stepping
   // (batch_fused_io.cc): the caller's StepIo, checked, with the joint
   // coordinates' layout worked out once per call.
@@ -83,6 +105,7 @@ class Batch::Impl {
     std::size_t per_world = 0;
   };
   struct BlockIo {
+    std::vector<CheckedAction> actions;
     std::span<const std::uint8_t> reset_mask;
     std::span<const float> reset_states;
     float* state_out = nullptr;
@@ -93,6 +116,8 @@ class Batch::Impl {
   // Refuses (std::invalid_argument, by name) what Step(settings, io) must
   // not start with; writes nothing.
   BlockIo CheckedBlockIo(const StepIo& io) const;
+  // Before the block's step (or its skipping by a stop request): the actions.
+  void StartBlock(std::size_t block, const BlockIo& io);
   // After the block's step (stepped) or its skipping by a stop request.
   void FinishBlock(std::size_t block, const BlockIo& io, bool stepped);
 
@@ -168,7 +193,6 @@ class Batch::Impl {
   static bool Selected(std::span<const std::uint8_t> mask, std::size_t world) {
     return mask.empty() || mask[world] != 0;
   }
-  void WriteLanes(std::size_t offset, std::span<const float> per_world);
   void ResetWorld(std::size_t world);
   void ResetLanes(std::size_t block, const std::size_t* lanes, std::size_t count);
   // Reset (and with `states`, ResetTo) of the masked worlds, over the
@@ -195,12 +219,7 @@ class Batch::Impl {
   template <class Fn>
   void WithMotor(std::size_t world, std::size_t constraint, const char* what, Fn&& fn) {
     CheckWorld(world);
-    const ConstraintPlan& c = Constraint(constraint);
-    RefuseMultiAxis(c, what);
-    if (c.motor_offset == kAbsent) {
-      throw SceneError(c.label + ": " + what +
-                       " needs a motor or friction in the scene (motor_state / max friction)");
-    }
+    const ConstraintPlan& c = SingleMotor(constraint, what);
     if (c.type == ConstraintType::kHinge) {
       fn(In<AngularMotorLanes>(world, c.motor_offset), c);
     } else {

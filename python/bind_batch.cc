@@ -1,6 +1,6 @@
-// Python bindings: Batch (construction, step, state, actions, resets,
-// snapshots, health, reports). Per-world parameters are in
-// bind_batch_parameters.cc.
+// Python bindings: Batch (construction, state, actions, resets,
+// snapshots, health, reports). Step is in bind_step.cc, per-world
+// parameters in bind_batch_parameters.cc.
 //
 // Arrays are world-major, [world, ...], float32, and never converted: every
 // numpy argument goes through numpy_checks.h and is refused, by name, before
@@ -71,49 +71,8 @@ void BindConstruction(py::class_<Batch>& cls) {
       });
 }
 
-void BindStepAndState(py::class_<Batch>& cls) {
+void BindState(py::class_<Batch>& cls) {
   cls.def(
-         "step",
-         [](Batch& batch, const StepSettings& settings, py::handle reset_mask,
-            py::handle reset_states, py::handle state_out, py::handle joints_out) {
-           // A copy: another Python thread may change the settings object
-           // while this one steps without the GIL.
-           const StepSettings copy = settings;
-           // Every array checked (and refused by name) before the step.
-           StepIo io;
-           io.reset_mask = MaskArgument(reset_mask, "reset_mask", batch.world_count());
-           const Shape state_shape{Worlds(batch), Bodies(batch), kStateFloatsPerBody};
-           if (!reset_states.is_none()) {
-             io.reset_states = ArrayArgument<float>(reset_states, "reset_states", state_shape);
-           }
-           if (!state_out.is_none()) {
-             io.state_out = OutputArgument<float>(state_out, "state_out", state_shape);
-           }
-           if (!joints_out.is_none()) {
-             io.joints_out = OutputArgument<float>(
-                 joints_out, "joints_out",
-                 {Worlds(batch), static_cast<py::ssize_t>(batch.JointCoordinatesPerWorld())});
-           }
-           // The step runs on TBB's threads without the GIL: other Python
-           // threads go on meanwhile (a call on this same Batch from one of
-           // them raises RuntimeError: a Batch is one thread at a time).
-           py::gil_scoped_release release;
-           batch.Step(copy, io);
-         },
-         py::arg_v("settings", StepSettings{}, "StepSettings()"), py::kw_only(),
-         py::arg("reset_mask") = py::none(), py::arg("reset_states") = py::none(),
-         py::arg("state_out") = py::none(), py::arg("joints_out") = py::none(),
-         "Steps every world by settings.delta_time (the GIL is released meanwhile). The "
-         "keywords do an RL loop's resets and observation reads inside the step's pass over "
-         "each block of 16 worlds (cheaper than separate calls, same bits): after a world's "
-         "step, the worlds where reset_mask != 0 (bool or uint8 [world]) go back to the "
-         "scene's initial state, as reset(mask), or with reset_states (float32 [world, body, "
-         "13]) as reset_to(mask, reset_states); then state_out (float32 [world, body, 13]) "
-         "is filled as get_state(out=) and joints_out (float32 [world, "
-         "joint_coordinates_per_world]) as get_joint_coordinates(out=). For autoreset, pass "
-         "the worlds done after the previous step: their observation is then their new "
-         "episode's first. Every array is checked before anything is written.")
-      .def(
           "get_state",
           [](const Batch& batch, py::object out) {
             const Shape shape{Worlds(batch), Bodies(batch), kStateFloatsPerBody};
@@ -489,7 +448,8 @@ void BindBatch(py::module_& m) {
                         "thread-safe: call a Batch from one thread at a time (concurrent use "
                         "raises RuntimeError).");
   BindConstruction(cls);
-  BindStepAndState(cls);
+  BindStep(cls);  // bind_step.cc
+  BindState(cls);
   BindJointCoordinates(cls);
   BindActions(cls);
   BindResetsAndSnapshots(cls);

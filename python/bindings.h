@@ -27,6 +27,8 @@ void BindConstraints(py::module_& m);  // bind_constraints.cc: every constraint 
 void BindScene(py::module_& m);        // bind_scene.cc: Scene, reference scenes
 void BindBatch(py::module_& m);        // bind_batch.cc: Batch
 void BindRecording(py::module_& m);    // bind_recording.cc: Recorder
+// bind_step.cc: Batch.step with its actions, resets and outputs.
+void BindStep(py::class_<Batch>& cls);
 // bind_batch_parameters.cc: Batch's per-world parameters (masses, limits...).
 void BindParameters(py::class_<Batch>& cls);
 

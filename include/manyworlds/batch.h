@@ -138,14 +138,34 @@ enum class StateField : std::uint8_t {
 std::size_t StateFieldOffset(StateField field);
 std::size_t StateFieldSize(StateField field);
 
+// An action written by Step(settings, io) inside the step's own pass: into
+// each block just before it steps, by the task that steps it (written from
+// the calling thread instead, half of the blocks would be stepped by the
+// other core from the caller's cache). Bit for bit the separate call named,
+// made before the Step, with its checks and its notes of non-finite values
+// (reported in WorldHealth after the step, as for the separate call).
+enum class ActionKind : std::uint8_t {
+  kForce,           // SetForces(body, per_world): [world][3], N, world space
+  kTorque,          // SetTorques(body, per_world): [world][3], N m, world space
+  kTargetVelocity,  // SetTargetVelocities(constraint, per_world): [world]
+  kTargetPosition,  // SetTargetPositions(constraint, per_world): [world]
+};
+struct StepAction {
+  ActionKind kind;
+  std::size_t index;  // the body (forces, torques) or the constraint (targets)
+  std::span<const float> per_world;
+};
+
 // What one Batch::Step(settings, io) does besides stepping, block by block
 // in the step's own pass (on the step's threads, while each block of 16
-// worlds is in cache): an RL loop's resets of done worlds and its reads of
-// observations, which as separate calls pass over every block again (on
-// two threads from the other core's cache). Every span is optional (empty:
+// worlds is in cache): an RL loop's actions, its resets of done worlds and
+// its reads of observations, which as separate calls pass over every block
+// again (on two threads from the other core's cache). Every span is
+// optional (empty:
 // not done); a non-empty one must have exactly the size given, or the call
 // throws std::invalid_argument naming it before anything is written or
 // stepped. Per block, in this order:
+//   0. write the actions, in the order given (StepAction above);
 //   1. step the block (health flags and StepSettings::unhealthy_worlds as
 //      in a plain Step);
 //   2. reset the worlds with reset_mask[world] != 0 to the scene's initial
@@ -153,15 +173,17 @@ std::size_t StateFieldSize(StateField field);
 //      reset_states, as ResetTo (a zero rotation in a masked world's rows is
 //      refused up front);
 //   3. write the outputs from the worlds as they are now.
-// The results are bit for bit those of Step(settings, stop); then
-// Reset(mask) or ResetTo(mask, states); GetState(state_out);
-// GetJointCoordinates(joints_out). Resetting after the step is what
+// The results are bit for bit those of the actions' separate calls;
+// Step(settings, stop); Reset(mask) or ResetTo(mask, states);
+// GetState(state_out); GetJointCoordinates(joints_out). Resetting after the step is what
 // Gymnasium's and EnvPool's autoreset needs: pass the worlds that were done
 // after the previous step; their action of this step is wasted, and the
 // observation written for them is their new episode's first (the initial
-// state). A block a stop request left unstepped (kNotStepped) is not reset
-// either (nothing of it changes), but its outputs are written.
+// state). A block a stop request left unstepped (kNotStepped) gets its
+// actions (for its next step, as with the separate calls) but is not reset;
+// its outputs are written.
 struct StepIo {
+  std::span<const StepAction> actions;       // written before each block steps
   std::span<const std::uint8_t> reset_mask;  // [world], or empty: no resets
   std::span<const float> reset_states;       // [world][body][13]; needs reset_mask
   std::span<float> state_out;                // [world][body][13] (GetState)

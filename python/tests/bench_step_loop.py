@@ -13,12 +13,15 @@ time, on which other programs' load has little effect):
   +numpy  the same loop with the done flags computed from the observations
           with numpy (cart off the track or pole past 0.2 rad) instead of
           drawn beforehand: what a plain numpy environment adds on top;
-  fused   the loop with one call for step, resets and observations:
-          set_body_forces, then step(settings, reset_mask=done,
-          state_out=obs), which resets the done worlds and reads the state
-          inside the step's pass over each block (the same resets and reads
-          per step as `loop`; the reset follows the step, so the
-          observation of a reset world is its initial state);
+  forces apart  set_body_forces, then one call for step, resets and
+          observations, step(settings, reset_mask=done, state_out=obs);
+  fused   the loop as one call: step(settings, body_forces={CART:
+          forces}, reset_mask=done, state_out=obs), which writes each
+          block's actions just before it steps, resets its done worlds and
+          reads its state just after, all inside the step's pass over the
+          blocks (the same actions, resets and reads per step as `loop`;
+          the reset follows the step, so the observation of a reset world
+          is its initial state);
   fused+numpy  `fused` with the numpy done flags of `+numpy`, passed to the
           next step's reset_mask;
   joints  `fused` reading joint coordinates (joints_out=, what
@@ -49,8 +52,9 @@ import manyworlds as mw
 
 CART, POLE = mw.reference_scene.CART, mw.reference_scene.POLE
 PHASES = ("set_body_forces", "step", "get_state", "reset")
-FUSED_PHASES = ("set_body_forces", "step(reset_mask=, state_out=)")
-LOOPS = ("loop", "numpy", "fused", "fused_numpy", "joints")
+FUSED_PHASES = ("step(body_forces=, reset_mask=, state_out=)",)
+LOOPS = ("loop", "numpy", "forces_apart", "fused", "fused_numpy", "joints")
+LOOP_LABELS = ("loop", "+numpy", "forces apart", "fused", "fused+numpy", "fused joints")
 
 
 class Rollout:
@@ -103,12 +107,19 @@ class Rollout:
             batch.reset(done)
         return time.perf_counter_ns() - start, time.thread_time_ns() - start_cpu
 
+    def forces_apart(self, batch, settings):
+        obs = self.observations
+        start, start_cpu = time.perf_counter_ns(), time.thread_time_ns()
+        for forces, done in zip(self.forces, self.done_masks):
+            batch.set_body_forces(CART, forces)
+            batch.step(settings, reset_mask=done, state_out=obs)
+        return time.perf_counter_ns() - start, time.thread_time_ns() - start_cpu
+
     def fused(self, batch, settings, output="state_out"):
         outputs = {output: self.observations if output == "state_out" else self.joints}
         start, start_cpu = time.perf_counter_ns(), time.thread_time_ns()
         for forces, done in zip(self.forces, self.done_masks):
-            batch.set_body_forces(CART, forces)
-            batch.step(settings, reset_mask=done, **outputs)
+            batch.step(settings, body_forces={CART: forces}, reset_mask=done, **outputs)
         return time.perf_counter_ns() - start, time.thread_time_ns() - start_cpu
 
     def fused_joints(self, batch, settings):
@@ -119,8 +130,7 @@ class Rollout:
         done[:] = False
         start, start_cpu = time.perf_counter_ns(), time.thread_time_ns()
         for forces in self.forces:
-            batch.set_body_forces(CART, forces)
-            batch.step(settings, reset_mask=done, state_out=obs)
+            batch.step(settings, body_forces={CART: forces}, reset_mask=done, state_out=obs)
             np.abs(obs[:, CART, 0], out=scratch)
             np.greater(scratch, 2.4, out=done)
             np.abs(obs[:, POLE, 5], out=scratch)
@@ -132,11 +142,11 @@ class Rollout:
         """Microseconds per call of each phase of `loop` (or `fused`),
         summed over the steps and divided by their number."""
         obs = self.observations
-        phases = {"set_body_forces": lambda forces, done: batch.set_body_forces(CART, forces)}
         if fused:
-            phases[FUSED_PHASES[1]] = lambda forces, done: batch.step(settings, reset_mask=done,
-                                                                      state_out=obs)
+            phases = {FUSED_PHASES[0]: lambda forces, done: batch.step(
+                settings, body_forces={CART: forces}, reset_mask=done, state_out=obs)}
         else:
+            phases = {"set_body_forces": lambda forces, done: batch.set_body_forces(CART, forces)}
             phases["step"] = lambda forces, done: batch.step(settings)
             phases["get_state"] = lambda forces, done: batch.get_state(out=obs)
             phases["reset"] = lambda forces, done: batch.reset(done)
@@ -193,7 +203,8 @@ def main():
         for config in configs:
             batch, rollout = config["batch"], config["rollout"]
             timings = [("step", rollout.step_only), ("loop", rollout.loop),
-                       ("numpy", rollout.loop_with_numpy_done), ("fused", rollout.fused),
+                       ("numpy", rollout.loop_with_numpy_done),
+                       ("forces_apart", rollout.forces_apart), ("fused", rollout.fused),
                        ("fused_numpy", rollout.fused_with_numpy_done),
                        ("joints", rollout.fused_joints)]
             # Rotate the order, so that drift and cache warmth favour none.
@@ -212,8 +223,7 @@ def main():
           f"x {args.repeats} repeats (median), SIMD target {configs[0]['batch'].simd_target}, "
           f"{100 * args.reset_rate:g} % of worlds reset per step")
     print(f"{'threads':>7} {'step() ns/world-step':>21}"
-          + "".join(f" {name:>15}" for name in ("loop", "+numpy", "fused", "fused+numpy",
-                                               "fused joints")))
+          + "".join(f" {name:>15}" for name in LOOP_LABELS))
     worst = -math.inf
     for config in configs:
         row, percent = overheads(config["wall"])

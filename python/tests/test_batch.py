@@ -10,7 +10,8 @@ import pytest
 import manyworlds as mw
 from conftest import (WORLDS, assert_same_bits, bits, motor_hinge_scene, random_cart_forces)
 
-CART = mw.reference_scene.CART
+CART, POLE = mw.reference_scene.CART, mw.reference_scene.POLE
+RAIL, POLE_HINGE = mw.reference_scene.RAIL, mw.reference_scene.POLE_HINGE
 
 
 def step_with_forces(batch, forces_per_step):
@@ -399,3 +400,49 @@ def test_fused_step_flags_a_nan_world_and_no_other():
         if step == 1:
             assert dirty.health[9] & mw.WorldHealthBits.NON_FINITE_INPUT
     assert dirty.health[9] == 0 and np.isfinite(obs_dirty[9]).all()
+
+
+@pytest.mark.parametrize("threads", [1, 2])
+def test_fused_actions_give_the_bits_of_separate_calls(threads):
+    """step(body_forces=, body_torques=, target_velocities=, target_positions=)
+    equals set_body_forces, set_body_torques, set_target_velocities,
+    set_target_positions, then step(), bit for bit (targets beyond the limits
+    clamped alike; a NaN force flags its world alike), with resets and reads
+    in the same call."""
+    worlds = 1040
+    scene = mw.make_scene("cartpole")
+    rail = scene.constraints[RAIL]
+    rail.limits_min, rail.limits_max = -0.5, 0.5
+    rail.motor_state = mw.MotorState.POSITION
+    scene.set_constraint(RAIL, rail)
+    hinge = scene.constraints[POLE_HINGE]
+    hinge.motor_state = mw.MotorState.VELOCITY
+    hinge.motor.min_force_limit, hinge.motor.max_force_limit = -2.0, 2.0
+    scene.set_constraint(POLE_HINGE, hinge)
+    separate = mw.Batch(scene, worlds, threads=threads)
+    fused = mw.Batch(scene, worlds, threads=threads)
+    rng = np.random.default_rng(8)
+    state_out = np.empty((worlds, 3, 13), np.float32)
+    for step in range(12):
+        forces = random_cart_forces(rng, worlds)
+        if step == 2:
+            forces[17, 0] = np.nan
+        torques = rng.uniform(-1, 1, (worlds, 3)).astype(np.float32)
+        positions = rng.uniform(-1, 1, worlds).astype(np.float32)
+        velocity = float(rng.uniform(-3, 3))  # one number for every world
+        done = rng.random(worlds) < 0.05
+        done[17] = False
+        separate.set_body_forces(CART, forces)
+        separate.set_body_torques(POLE, torques)
+        separate.set_target_velocities(POLE_HINGE, velocity)
+        separate.set_target_positions(RAIL, positions)
+        separate.step()
+        separate.reset(done)
+        fused.step(body_forces={CART: forces}, body_torques={POLE: torques},
+                   target_velocities={POLE_HINGE: velocity}, target_positions={RAIL: positions},
+                   reset_mask=done, state_out=state_out)
+        assert_same_bits(state_out, separate.get_state())
+        np.testing.assert_array_equal(fused.health, separate.health)
+        assert fused.snapshot().bytes() == separate.snapshot().bytes()
+        if step == 2:
+            assert fused.health[17] & mw.WorldHealthBits.NON_FINITE_INPUT

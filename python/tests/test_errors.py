@@ -10,7 +10,7 @@ import pytest
 import manyworlds as mw
 from conftest import WORLDS, assert_same_bits, motor_hinge_scene
 
-CART = mw.reference_scene.CART
+CART, POLE = mw.reference_scene.CART, mw.reference_scene.POLE
 POLE_HINGE = mw.reference_scene.POLE_HINGE
 
 
@@ -63,6 +63,9 @@ ARRAY_ARGUMENTS = [
      lambda b, a: b.step(reset_mask=np.ones(WORLDS, bool), reset_states=a)),
     ("state_out", S, lambda b, a: b.step(state_out=a)),
     ("joints_out", (WORLDS, 5), lambda b, a: b.step(joints_out=a)),
+    ("body_forces[1]", (WORLDS, 3), lambda b, a: b.step(body_forces={CART: a})),
+    ("body_torques[2]", (WORLDS, 3), lambda b, a: b.step(body_torques={POLE: a})),
+    ("target_velocities[1]", (WORLDS,), lambda b, a: b.step(target_velocities={POLE_HINGE: a})),
 ]
 IDS = [f"{i}-{name}" for i, (name, _, _) in enumerate(ARRAY_ARGUMENTS)]
 
@@ -275,3 +278,28 @@ def test_a_refused_step_writes_no_output(stepped_cartpole):
     assert_refused(b, lambda: b.step(mw.StepSettings(substeps=0), state_out=state_out,
                                      joints_out=joints_out), ValueError, "substeps")
     assert np.all(state_out == 7.0) and np.all(joints_out == 7.0)
+
+
+STEP_ACTION_REFUSALS = [
+    (lambda b, f: b.step(body_forces=f), TypeError,
+     "body_forces: expected a dict {body: float32 array [world, 3]}, got ndarray"),
+    (lambda b, f: b.step(target_positions={"rail": 0.0}), TypeError,
+     "target_positions: keys are constraint indices (int), got 'rail'"),
+    (lambda b, f: b.step(body_torques={7: f}), IndexError, "body 7 out of range [0, 3)"),
+    (lambda b, f: b.step(body_forces={0: f}), mw.SceneError,
+     "'world': a force applies to dynamic bodies only"),
+    (lambda b, f: b.step(target_velocities={POLE_HINGE: 1.0}), mw.SceneError,
+     "'pole hinge': a target velocity needs a motor or friction"),
+    # A good action before a bad one is not written either.
+    (lambda b, f: b.step(body_forces={CART: f}, body_torques={POLE: f[:-1]}), ValueError,
+     f"body_torques[2]: expected shape ({WORLDS}, 3), got ({WORLDS - 1}, 3)"),
+    (lambda b, f: b.step(body_forces={CART: f}, target_velocities={POLE_HINGE: 1.0},
+                         state_out=np.empty(S, np.float32)), mw.SceneError, "needs a motor"),
+]
+
+
+@pytest.mark.parametrize("call,exception,message", STEP_ACTION_REFUSALS)
+def test_step_actions_are_refused_by_name_before_anything(stepped_cartpole, call, exception,
+                                                          message):
+    forces = np.full((WORLDS, 3), 3.0, np.float32)
+    assert_refused(stepped_cartpole, lambda: call(stepped_cartpole, forces), exception, message)

@@ -87,7 +87,7 @@ class ReacherEnv(ManyWorldsVectorEnv):
             outside = np.hypot(goal[:, 0], goal[:, 1]) >= self.TARGET_RADIUS
         self.target[idx] = goal
 
-    def _apply_actions(self, actions):
+    def _actions(self, actions):
         q = self._joints
         shoulder = self.GEAR * actions[:, 0] - self.DAMPING * q[:, 2]
         elbow = self.GEAR * actions[:, 1] - self.DAMPING * q[:, 5]
@@ -95,8 +95,7 @@ class ReacherEnv(ManyWorldsVectorEnv):
         # every body of every world and costs more).
         self._upper_torque[:, 2] = -(shoulder - elbow)  # about the hinges' -Z axis
         self._lower_torque[:, 2] = -elbow
-        self.batch.set_body_torques(self.UPPER, self._upper_torque)
-        self.batch.set_body_torques(self.LOWER, self._lower_torque)
+        return {"body_torques": {self.UPPER: self._upper_torque, self.LOWER: self._lower_torque}}
 
     def fingertip(self):
         """[W, 2] fingertip position (m) from the joint angles."""
@@ -171,11 +170,11 @@ class RagdollPoseEnv(ManyWorldsVectorEnv):
         u = rng.uniform(0.0, 1.0, (len(idx), len(self.MOTORS)))
         self.target_pose[idx] = self.limits[:, 0] + u * (self.limits[:, 1] - self.limits[:, 0])
 
-    def _apply_actions(self, actions):
+    def _actions(self, actions):
         low, high = self.limits[:, 0], self.limits[:, 1]
         self._targets[:] = (low + 0.5 * (actions + 1.0) * (high - low)).T
-        for i, constraint in enumerate(self.MOTORS):  # one call per motor, never per world
-            self.batch.set_target_positions(constraint, self._targets[i])
+        # One [W] array per motor, never a loop over worlds.
+        return {"target_positions": {c: self._targets[i] for i, c in enumerate(self.MOTORS)}}
 
     def _observe(self):
         return np.concatenate([self._joints, self.target_pose], axis=1)

@@ -113,10 +113,10 @@ class CartpoleEnv(ManyWorldsVectorEnv):
         states[:, self.POLE] = planar_states(x + px, py, angle, vx + vpx, vpy, omega)
         return states
 
-    def _apply_actions(self, actions):
+    def _actions(self, actions):
         self._control = actions[:, 0]
         self._forces[:, 0] = self.FORCE_GEAR * self._control
-        self.batch.set_body_forces(self.CART, self._forces)
+        return {"body_forces": {self.CART: self._forces}}
 
     # joint coordinates: [x, x_dot, angle, unwrapped angle, angular velocity]
     def _observe(self):
@@ -194,10 +194,10 @@ class PendulumSwingupEnv(ManyWorldsVectorEnv):
         states[:, self.POLE] = planar_states(px, py, angle, zero, zero, zero)
         return states
 
-    def _apply_actions(self, actions):
+    def _actions(self, actions):
         torque = actions[:, 0] - self.DAMPING * self._joints[:, 2]
         self._torque[:, 2] = -torque  # about the hinge's -Z axis
-        self.batch.set_body_torques(self.POLE, self._torque)
+        return {"body_torques": {self.POLE: self._torque}}
 
     def _observe(self):
         q = self._joints
@@ -279,7 +279,7 @@ class AcrobotSwingupEnv(ManyWorldsVectorEnv):
         return states
 
     # joint coordinates: shoulder [angle, unwrapped, rate], elbow [angle, unwrapped, rate]
-    def _apply_actions(self, actions):
+    def _actions(self, actions):
         q = self._joints
         shoulder = -self.DAMPING * q[:, 2]
         elbow = self.GEAR * actions[:, 0] - self.DAMPING * q[:, 5]
@@ -287,8 +287,7 @@ class AcrobotSwingupEnv(ManyWorldsVectorEnv):
         # every body of every world and costs more).
         self._upper_torque[:, 2] = -(shoulder - elbow)  # about the hinges' -Z axis
         self._lower_torque[:, 2] = -elbow
-        self.batch.set_body_torques(self.UPPER, self._upper_torque)
-        self.batch.set_body_torques(self.LOWER, self._lower_torque)
+        return {"body_torques": {self.UPPER: self._upper_torque, self.LOWER: self._lower_torque}}
 
     def _observe(self):
         q = self._joints

@@ -62,8 +62,10 @@ class ManyWorldsVectorEnv(_compat.VectorEnvBase):
 
     A subclass sets `env_id`, `default_max_episode_steps`, `step_settings`
     and the spaces, and implements _make_scene(), _reset_states(idx, rng),
-    _apply_actions(actions), _observe() and _reward(actions); optionally
-    _terminated() and _on_reset(mask, rng).
+    _actions(actions) (the step's action keywords, e.g. {"body_forces":
+    {body: [W, 3] array}}, written by the step itself: see Batch.step),
+    _observe() and _reward(actions); optionally _terminated() and
+    _on_reset(mask, rng).
     """
 
     env_id = None
@@ -198,8 +200,7 @@ class ManyWorldsVectorEnv(_compat.VectorEnvBase):
             actions[pending] = 0.0
             reset_states = self._draw_reset(pending)
 
-        self._apply_actions(actions)
-        self._step_batch(pending if resetting else None, reset_states)
+        self._step_batch(self._actions(actions), pending if resetting else None, reset_states)
         self._elapsed += 1
         if resetting:
             self._finish_reset(pending, {})
@@ -260,10 +261,12 @@ class ManyWorldsVectorEnv(_compat.VectorEnvBase):
         if self.needs_state:
             self.batch.get_state(out=self._state)
 
-    def _step_batch(self, reset_mask, reset_states):
-        """One step of every world; the observations (and the resets of
-        reset_mask, if any) done by the step in the same pass over the worlds."""
-        self.batch.step(self.step_settings, reset_mask=reset_mask, reset_states=reset_states,
+    def _step_batch(self, actions, reset_mask, reset_states):
+        """One step of every world; the actions (the keywords of _actions),
+        the observations and the resets of reset_mask, if any, done by the
+        step in the same pass over the worlds."""
+        self.batch.step(self.step_settings, **actions, reset_mask=reset_mask,
+                        reset_states=reset_states,
                         joints_out=self._joints,
                         state_out=self._state if self.needs_state else None)
 
@@ -344,7 +347,7 @@ class ManyWorldsVectorEnv(_compat.VectorEnvBase):
     def _on_reset(self, idx, rng):
         """Per-episode task variables (targets) of the worlds idx."""
 
-    def _apply_actions(self, actions):
+    def _actions(self, actions):
         raise NotImplementedError
 
     def _observe(self):
