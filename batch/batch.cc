@@ -117,6 +117,7 @@ Batch::Impl::Impl(const Scene& scene, std::size_t world_count, BatchOptions opti
       storage_(arrays_per_block_ * block_count_),
       input_arrays_(InputArrays(plan_)),
       kernels_(StepKernelsFor(options.target)),
+      joint_kernels_(KernelsForTarget<JointCoordinateKernels>(kernels_->target.bits)),
       threads_(ThreadsOf(options)),
       arena_(threads_),
       blocks_per_task_(options.blocks_per_task) {

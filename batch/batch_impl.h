@@ -22,6 +22,7 @@
 
 #include "batch/constraint_block.h"  // At
 #include "batch/constraint_lanes.h"
+#include "batch/joint_coordinates.h"
 #include "batch/plan.h"
 #include "batch/step_kernels.h"
 #include "manyworlds/batch.h"
@@ -253,6 +254,8 @@ class Batch::Impl {
   // torques, motor and drive targets), for InputsFinite.
   std::vector<std::size_t> input_arrays_;
   const StepKernels* kernels_;
+  // The joint-coordinate read-out of the same Highway target as the step.
+  const JointCoordinateKernels* joint_kernels_;
   int threads_;
   mutable tbb::task_arena arena_;  // const read-outs run in it too
   std::size_t blocks_per_task_;

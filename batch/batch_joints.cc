@@ -1,5 +1,8 @@
 // Batch: joint coordinates and motor forces per world (the read-outs are
-// batch/joint_coordinates.h; here only the world loop and the size checks).
+// batch/joint_coordinates.h; here only the block loop and the size checks).
+// Joint coordinates are read a block at a time by the SIMD kernels of the
+// step's Highway target, also for one world (its block's read-out, one row
+// kept), so every form gives the same bits.
 
 #include <algorithm>
 #include <string>
@@ -23,11 +26,11 @@ void Batch::GetJointCoordinates(std::size_t constraint, std::span<float> out) co
   const Impl& batch = impl();
   const std::size_t count = JointCoordinateCount(constraint);
   batch.CheckSize(out.size(), batch.world_count_ * count, "GetJointCoordinates");
+  if (count == 0) return;
   batch.ForEachBlock([&](std::size_t block) {
-    for (auto [world, end] = batch.WorldsOf(block); world < end; ++world) {
-      JointCoordinatesOfLane(batch.plan_, batch.Block(block), Impl::Lane(world), constraint,
-                             out.data() + world * count);
-    }
+    const auto [first, end] = batch.WorldsOf(block);
+    batch.joint_kernels_->read_block(batch.plan_, batch.Block(block), constraint, end - first,
+                                     count, out.data() + first * count);
   });
 }
 
@@ -49,18 +52,24 @@ Batch::Impl::JointLayout Batch::Impl::JointCoordinateLayout() const {
   return layout;
 }
 
+// The block's lanes up to the world's, one row kept.
 void Batch::Impl::ReadJointCoordinatesOfWorld(std::size_t world, const JointLayout& layout,
                                               float* row) const {
+  const std::size_t lanes = Lane(world) + 1;
+  std::vector<float> rows(lanes * layout.per_world);
   for (std::size_t i = 0; i < layout.constraints.size(); ++i) {
-    JointCoordinatesOfLane(plan_, Block(world / kLaneWidth), Lane(world), layout.constraints[i],
-                           row + layout.offsets[i]);
+    joint_kernels_->read_block(plan_, Block(world / kLaneWidth), layout.constraints[i], lanes,
+                               layout.per_world, rows.data() + layout.offsets[i]);
   }
+  std::copy_n(rows.data() + Lane(world) * layout.per_world, layout.per_world, row);
 }
 
 void Batch::Impl::ReadJointCoordinatesOfBlock(std::size_t block, const JointLayout& layout,
                                               float* out) const {
-  for (auto [world, end] = WorldsOf(block); world < end; ++world) {
-    ReadJointCoordinatesOfWorld(world, layout, out + world * layout.per_world);
+  const auto [first, end] = WorldsOf(block);
+  for (std::size_t i = 0; i < layout.constraints.size(); ++i) {
+    joint_kernels_->read_block(plan_, Block(block), layout.constraints[i], end - first,
+                               layout.per_world, out + first * layout.per_world + layout.offsets[i]);
   }
 }
 

@@ -1,6 +1,9 @@
-// Joint coordinates of one world (lane), the observations RL tasks are made
-// of, computed on the host in double from the lane's body state and the
-// constraint's frames in the block, and rounded to float:
+// Joint coordinates, the observations RL tasks are made of, from the body
+// states and the constraint's frames in a block. Two implementations of the
+// same formulas: JointCoordinateKernels, SIMD in float over a block's lanes
+// (joint_coordinate_kernels.cc, what Batch reads), and JointCoordinatesOfLane,
+// one lane in double (the reference the tests hold every target to, and the
+// path's closest-point search, which the kernels call per lane):
 //
 //   hinge        angle (rad, (-pi, pi], Jolt's theta), unwrapped_angle (rad,
 //                continuous over turns: theta + 2 pi turns, turns counted at
@@ -31,6 +34,7 @@
 #include <vector>
 
 #include "batch/plan.h"
+#include "kernels/kernel_table.h"
 
 namespace manyworlds {
 
@@ -40,6 +44,16 @@ std::vector<std::string> JointCoordinateNames(const ConstraintPlan& c);
 // Writes JointCoordinateNames(c).size() floats.
 void JointCoordinatesOfLane(const StepPlan& plan, const std::byte* block, std::size_t lane,
                             std::size_t constraint, float* out);
+
+struct JointCoordinateKernels {
+  TargetInfo target;
+  // The JointCoordinateCount(c) floats of constraint `constraint` for lanes
+  // [0, lanes) of the block, lane l's at out + l * row_stride.
+  void (*read_block)(const StepPlan& plan, const std::byte* block, std::size_t constraint,
+                     std::size_t lanes, std::size_t row_stride, float* out);
+};
+
+MANYWORLDS_DECLARE_KERNEL_TABLE(JointCoordinateKernels)
 
 std::size_t MotorForceCount(const ConstraintPlan& c);
 // Writes MotorForceCount(c) floats; `substep_dt` 0 (no step yet) gives zeros.
