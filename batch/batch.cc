@@ -120,7 +120,8 @@ Batch::Impl::Impl(const Scene& scene, std::size_t world_count, BatchOptions opti
       joint_kernels_(KernelsForTarget<JointCoordinateKernels>(kernels_->target.bits)),
       threads_(ThreadsOf(options)),
       arena_(threads_),
-      blocks_per_task_(options.blocks_per_task) {
+      blocks_per_task_(options.blocks_per_task),
+      profile_phases_(options.profile_phases) {
   WriteInitialBlock(scene_, plan_, Bytes(initial_.data()));
   for (std::size_t block = 0; block < block_count_; ++block) {
     std::copy(initial_.begin(), initial_.end(), storage_.begin() + block * arrays_per_block_);
@@ -159,7 +160,7 @@ void Batch::Impl::Step(const StepSettings& settings, std::stop_token stop, const
         if (io != nullptr) FinishBlock(block, *io, false);
         continue;
       }
-      const bool unhealthy = kernels_->step_block(plan_, Block(block), params);
+      const bool unhealthy = StepBlock(block, params);
       RecordHealth(block, unhealthy, reset_unhealthy);
       if (io != nullptr) FinishBlock(block, *io, true);
     }
@@ -172,6 +173,19 @@ void Batch::Impl::Step(const StepSettings& settings, std::stop_token stop, const
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, block_count_, grain), step_blocks,
                       tbb::simple_partitioner());
   });
+}
+
+bool Batch::Impl::StepBlock(std::size_t block, const StepParams& params) {
+  if (!profile_phases_) return kernels_->step_block(plan_, Block(block), params);
+  std::uint64_t phase_ns[kStepPhaseCount] = {};
+  const bool unhealthy = kernels_->step_block_profiled(plan_, Block(block), params, phase_ns);
+  for (std::size_t p = 0; p < kStepPhaseCount; ++p) {
+    phase_ns_[p].fetch_add(phase_ns[p], std::memory_order_relaxed);
+  }
+  const auto [first, end] = WorldsOf(block);
+  profiled_blocks_.fetch_add(1, std::memory_order_relaxed);
+  profiled_worlds_.fetch_add(end - first, std::memory_order_relaxed);
+  return unhealthy;
 }
 
 // Copies the block's health lanes of its real worlds, with the non-finite
@@ -484,6 +498,36 @@ std::string Batch::Plan(const StepSettings& settings) const {
   return DescribePlan(impl().plan_, settings) + "kernels: " +
          impl().kernels_->target.name + ", " +
          std::to_string(impl().kernels_->target.vector_lanes) + " float lanes per vector\n";
+}
+
+const char* StepPhaseName(StepPhase phase) {
+  static constexpr const char* kNames[kStepPhaseCount] = {
+      "forces", "setup", "warm_start", "velocity", "integration", "position", "finish"};
+  const auto index = static_cast<std::size_t>(phase);
+  if (index >= kStepPhaseCount) {
+    throw std::invalid_argument("StepPhase " + std::to_string(index) +
+                                " is not a StepPhase (accepted 0 to 6)");
+  }
+  return kNames[index];
+}
+
+PhaseProfile Batch::GetPhaseProfile() const {
+  const Impl& batch = impl();
+  PhaseProfile profile;
+  for (std::size_t p = 0; p < kStepPhaseCount; ++p) {
+    profile.seconds[p] = 1e-9 * double(batch.phase_ns_[p].load(std::memory_order_relaxed));
+  }
+  profile.block_steps = batch.profiled_blocks_.load(std::memory_order_relaxed);
+  profile.world_steps = batch.profiled_worlds_.load(std::memory_order_relaxed);
+  return profile;
+}
+
+void Batch::ResetPhaseProfile() {
+  Impl& batch = impl();
+  const Impl::Exclusive exclusive(batch, "ResetPhaseProfile");
+  for (auto& ns : batch.phase_ns_) ns.store(0, std::memory_order_relaxed);
+  batch.profiled_blocks_.store(0, std::memory_order_relaxed);
+  batch.profiled_worlds_.store(0, std::memory_order_relaxed);
 }
 
 std::size_t Batch::BytesPerWorld() const { return impl().plan_.block_bytes / kLaneWidth; }

@@ -9,6 +9,7 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <cstddef>
@@ -125,6 +126,8 @@ class Batch::Impl {
   // Steps every block whose task starts before `stop` is requested; with
   // `io`, each block's resets and outputs follow its step in the same task.
   void Step(const StepSettings& settings, std::stop_token stop, const BlockIo* io = nullptr);
+  // One block's step, timed per phase when profiling; true if unhealthy.
+  bool StepBlock(std::size_t block, const StepParams& params);
   void RecordHealth(std::size_t block, bool unhealthy, bool reset_unhealthy);
   // Step's result: false when `stop` left some block unstepped.
   bool EveryWorldStepped(std::stop_token stop) const;
@@ -259,6 +262,11 @@ class Batch::Impl {
   int threads_;
   mutable tbb::task_arena arena_;  // const read-outs run in it too
   std::size_t blocks_per_task_;
+  // BatchOptions::profile_phases: nanoseconds per StepPhase, blocks and
+  // real worlds stepped, summed by every block's task.
+  bool profile_phases_;
+  std::array<std::atomic<std::uint64_t>, kStepPhaseCount> phase_ns_{};
+  std::atomic<std::uint64_t> profiled_blocks_{0}, profiled_worlds_{0};
   float previous_substep_dt_ = 0.0f;  // Jolt's mPreviousStepDeltaTime (0: cold start)
   std::vector<std::uint8_t> health_ = std::vector<std::uint8_t>(world_count_, 0);
   std::vector<std::uint8_t> pending_input_ = std::vector<std::uint8_t>(world_count_, 0);

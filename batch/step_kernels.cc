@@ -10,12 +10,19 @@
 //   forces and torques cleared; the health of every world checked (non-finite
 //   state, velocity overflow in the force step, coordinates out of range).
 //
+// The same code runs with a phase clock (BatchOptions::profile_phases): a
+// steady_clock read after each of those phases (StepPhase, batch.h), summed
+// per phase; the plain step's clock is empty and compiles away.
+//
 // The early-outs are result-neutral (spec 7): a pass in which no lane applied
 // an impulse leaves every velocity unchanged, so the next pass would too.
 // Scene-uniform decisions (constraint types, body kinds, features) are plain
 // control flow from the plan; per-world ones are masks inside the parts.
 
 #include "batch/step_kernels.h"
+
+#include <chrono>
+#include <cstdint>
 
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "batch/step_kernels.cc"
@@ -112,7 +119,28 @@ inline bool SolveConstraintPosition(const StepPlan& plan, const ConstraintBlock&
   return false;
 }
 
-bool StepBlock(const StepPlan& plan, std::byte* block, const StepParams& params) {
+// The phase clock of StepBlockWith: NoClock compiles to nothing (the plain
+// step); SteadyClock adds the time since its last lap to its phase's sum.
+struct NoClock {
+  void Start() {}
+  void Lap(StepPhase) {}
+};
+struct SteadyClock {
+  std::uint64_t* phase_ns;
+  std::chrono::steady_clock::time_point last;
+  void Start() { last = std::chrono::steady_clock::now(); }
+  void Lap(StepPhase phase) {
+    const auto now = std::chrono::steady_clock::now();
+    phase_ns[static_cast<std::size_t>(phase)] += static_cast<std::uint64_t>(
+        std::chrono::duration_cast<std::chrono::nanoseconds>(now - last).count());
+    last = now;
+  }
+};
+
+template <class Clock>
+bool StepBlockWith(const StepPlan& plan, std::byte* block, const StepParams& params,
+                   Clock& clock) {
+  clock.Start();
   const std::size_t constraint_count = plan.constraints.size();
   // Views of the plan's constraints in this block, in solve order: a few
   // offsets each, so built per pass rather than allocated per block.
@@ -138,16 +166,20 @@ bool StepBlock(const StepPlan& plan, std::byte* block, const StepParams& params)
                             At<BodyMotionLanes>(block, body.motion_offset), gravity, dt,
                             health);
     }
+    clock.Lap(StepPhase::kForces);
 
     if (constraint_count != 0) {
       for_each_constraint([&](const ConstraintBlock& c) { SetupConstraint(c, step); });
+      clock.Lap(StepPhase::kSetup);
       for_each_constraint([&](const ConstraintBlock& c) { WarmStartConstraint(c, step); });
+      clock.Lap(StepPhase::kWarmStart);
       for (int iteration = 0; iteration < params.velocity_iterations; ++iteration) {
         bool applied = false;
         for_each_constraint(
             [&](const ConstraintBlock& c) { applied |= SolveConstraintVelocity(c); });
         if (!applied) break;
       }
+      clock.Lap(StepPhase::kVelocity);
     }
 
     for (const BodyPlan& body : plan.bodies) {
@@ -158,6 +190,7 @@ bool StepBlock(const StepPlan& plan, std::byte* block, const StepParams& params)
               : nullptr;
       IntegrateBody(At<BodyLanes>(block, body.offset), motion, dt);
     }
+    clock.Lap(StepPhase::kIntegration);
 
     if (constraint_count != 0) {
       for (int iteration = 0; iteration < params.position_iterations; ++iteration) {
@@ -166,6 +199,7 @@ bool StepBlock(const StepPlan& plan, std::byte* block, const StepParams& params)
             [&](const ConstraintBlock& c) { applied |= SolveConstraintPosition(plan, c, step); });
         if (!applied) break;
       }
+      clock.Lap(StepPhase::kPosition);
     }
   }
 
@@ -188,11 +222,23 @@ bool StepBlock(const StepPlan& plan, std::byte* block, const StepParams& params)
                                         Load(health.out_of_range, offset)));
     unhealthy |= !hn::AllTrue(LaneTag(), hn::Eq(any, Zero()));
   });
+  clock.Lap(StepPhase::kFinish);
   return unhealthy;
 }
 
+bool StepBlock(const StepPlan& plan, std::byte* block, const StepParams& params) {
+  NoClock clock;
+  return StepBlockWith(plan, block, params, clock);
+}
+
+bool StepBlockProfiled(const StepPlan& plan, std::byte* block, const StepParams& params,
+                       std::uint64_t* phase_ns) {
+  SteadyClock clock{phase_ns, {}};
+  return StepBlockWith(plan, block, params, clock);
+}
+
 const StepKernels* GetStepKernels() {
-  static const StepKernels kTable = {MANYWORLDS_THIS_TARGET, &StepBlock};
+  static const StepKernels kTable = {MANYWORLDS_THIS_TARGET, &StepBlock, &StepBlockProfiled};
   return &kTable;
 }
 

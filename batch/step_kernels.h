@@ -3,9 +3,11 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 
 #include "batch/plan.h"
 #include "kernels/kernel_table.h"
+#include "manyworlds/batch.h"  // StepPhase
 #include "manyworlds/scene.h"
 
 namespace manyworlds {
@@ -27,6 +29,10 @@ struct StepKernels {
   // Steps the block and checks the health of its worlds (WorldHealthLanes);
   // true if any lane of the block is unhealthy.
   bool (*step_block)(const StepPlan& plan, std::byte* block, const StepParams& params);
+  // The same step, bit for bit, adding the nanoseconds spent in each phase
+  // to phase_ns[StepPhase] (kStepPhaseCount sums).
+  bool (*step_block_profiled)(const StepPlan& plan, std::byte* block, const StepParams& params,
+                              std::uint64_t* phase_ns);
 };
 
 MANYWORLDS_DECLARE_KERNEL_TABLE(StepKernels)

@@ -38,15 +38,16 @@ std::vector<std::uint8_t> EveryWorld(const Batch& batch) {
 
 void BindConstruction(py::class_<Batch>& cls) {
   cls.def(py::init([](const Scene& scene, std::size_t num_worlds, int threads, std::int64_t target,
-                      std::size_t blocks_per_task) {
+                      std::size_t blocks_per_task, bool profile_phases) {
             BatchOptions options;
             options.threads = threads;
             options.target = target;
             options.blocks_per_task = blocks_per_task;
+            options.profile_phases = profile_phases;
             return Batch(scene, num_worlds, options);
           }),
           py::arg("scene"), py::arg("num_worlds"), py::arg("threads") = 0, py::arg("target") = 0,
-          py::arg("blocks_per_task") = 0,
+          py::arg("blocks_per_task") = 0, py::arg("profile_phases") = false,
           "num_worlds copies of `scene`. threads 0: every core; target 0: the best SIMD "
           "target of this CPU. Raises SceneError (a ValueError) naming the body or "
           "constraint and field of a bad scene.")
@@ -387,6 +388,25 @@ void BindReports(py::class_<Batch>& cls) {
          "uint8 [world]: 0 when healthy, else an OR of WorldHealthBits (a copy, after the "
          "last step).")
       .def_property_readonly("unhealthy_world_count", &Batch::UnhealthyWorldCount)
+      .def(
+          "phase_profile",
+          [](const Batch& batch) {
+            const PhaseProfile profile = batch.GetPhaseProfile();
+            py::dict seconds;
+            for (std::size_t p = 0; p < kStepPhaseCount; ++p) {
+              seconds[StepPhaseName(StepPhase(p))] = profile.seconds[p];
+            }
+            py::dict result;
+            result["seconds"] = seconds;
+            result["block_steps"] = profile.block_steps;
+            result["world_steps"] = profile.world_steps;
+            return result;
+          },
+          "With profile_phases=True: {'seconds': {phase: thread seconds}, 'block_steps', "
+          "'world_steps'} summed since the batch was made or reset_phase_profile(); phases "
+          "in step order: forces, setup, warm_start, velocity, integration, position, "
+          "finish. Zeros without profiling.")
+      .def("reset_phase_profile", &Batch::ResetPhaseProfile)
       .def(
           "plan",
           [](const Batch& batch, std::optional<StepSettings> settings) {

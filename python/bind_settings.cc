@@ -198,7 +198,9 @@ void BindStepAndBatchOptions(py::module_& m) {
   options.def_readwrite("threads", &BatchOptions::threads, "0: every core")
       .def_readwrite("blocks_per_task", &BatchOptions::blocks_per_task, "0: automatic")
       .def_readwrite("target", &BatchOptions::target,
-                     "Highway target bit to force (0: the best this CPU supports)");
+                     "Highway target bit to force (0: the best this CPU supports)")
+      .def_readwrite("profile_phases", &BatchOptions::profile_phases,
+                     "time every phase of every block's step (Batch.phase_profile())");
 
   m.attr("MIN_SUBSTEP_DELTA_TIME") = kMinSubstepDeltaTime;
   m.attr("MAX_SUBSTEP_DELTA_TIME") = kMaxSubstepDeltaTime;

@@ -19,6 +19,7 @@
 // std::logic_error from every call but destruction and assignment.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -105,6 +106,36 @@ struct BatchOptions {
   // per-target tests; an unsupported target is refused. Affects this Batch
   // only (Highway's global dispatch is never changed).
   std::int64_t target = 0;
+  // Time every phase of every block's step (Batch::GetPhaseProfile): a
+  // steady_clock read after each phase of each block and substep, a few
+  // percent of a small scene's step (the results keep every bit).
+  bool profile_phases = false;
+};
+
+// The phases of a block's step (batch/step_kernels.cc), in order, each
+// substep: the forces (gravity, damping, velocity clamps), every constraint's
+// setup, warm start, the velocity iterations, integration, the position
+// iterations; then, once per step, the finish (forces cleared, health).
+enum class StepPhase : std::uint8_t {
+  kForces,
+  kSetup,
+  kWarmStart,
+  kVelocity,
+  kIntegration,
+  kPosition,
+  kFinish,
+};
+inline constexpr std::size_t kStepPhaseCount = 7;
+const char* StepPhaseName(StepPhase phase);  // "forces", "setup", "warm_start", ...
+
+// Where the steps' time went (BatchOptions::profile_phases): thread time
+// per phase summed over every block stepped since the Batch was made or
+// ResetPhaseProfile, and how many blocks (of 16 worlds) and real worlds
+// those were. seconds[p] / world_steps is a phase's cost per world-step.
+struct PhaseProfile {
+  std::array<double, kStepPhaseCount> seconds{};
+  std::uint64_t block_steps = 0;
+  std::uint64_t world_steps = 0;
 };
 
 // Every world of a Batch exactly as it is (Batch::Snapshot): bodies, per-world
@@ -329,6 +360,10 @@ class Batch {
   // Health of every world after the last Step, [world]: 0 or WorldHealthBits.
   // Worlds never interact: a flagged world changes no bit of any other world.
   std::span<const std::uint8_t> WorldHealth() const;
+
+  // The phase profile (BatchOptions::profile_phases; all zero without it).
+  PhaseProfile GetPhaseProfile() const;
+  void ResetPhaseProfile();
   std::size_t UnhealthyWorldCount() const;
 
   // The largest position error of any constraint in a world after the last

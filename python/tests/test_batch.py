@@ -446,3 +446,23 @@ def test_fused_actions_give_the_bits_of_separate_calls(threads):
         assert fused.snapshot().bytes() == separate.snapshot().bytes()
         if step == 2:
             assert fused.health[17] & mw.WorldHealthBits.NON_FINITE_INPUT
+
+
+def test_phase_profile_counts_every_phase_and_keeps_the_bits():
+    """profile_phases=True times each phase of the step (phase_profile()) and
+    changes no bit of the worlds; a plain batch's profile is all zero."""
+    scene = mw.make_scene("cartpole")
+    plain = mw.Batch(scene, WORLDS)
+    profiled = mw.Batch(scene, WORLDS, profile_phases=True)
+    for _ in range(4):
+        plain.step()
+        profiled.step()
+    assert plain.snapshot().bytes() == profiled.snapshot().bytes()
+    profile = profiled.phase_profile()
+    assert list(profile["seconds"]) == ["forces", "setup", "warm_start", "velocity",
+                                        "integration", "position", "finish"]
+    assert all(seconds > 0 for seconds in profile["seconds"].values())
+    assert profile["world_steps"] == 4 * WORLDS and profile["block_steps"] == 4 * WORLDS // 16
+    assert plain.phase_profile()["world_steps"] == 0
+    profiled.reset_phase_profile()
+    assert sum(profiled.phase_profile()["seconds"].values()) == 0
