@@ -47,6 +47,7 @@ constexpr const char* kUsage =
     "  manyworlds run --scene ID [--worlds N] [--steps N] [--threads N] [--substeps N]\n"
     "                 [--velocity-iterations N] [--position-iterations N] [--warmup N]\n"
     "                 [--seed N] [--mass-range-limit R] [--record FILE [--record-worlds LIST]]\n"
+    "                 [--profile]\n"
     "      steps N worlds of a reference or stress scene and reports throughput and constraint\n"
     "      error (defaults: 4096 worlds, 1000 timed steps after 20 warm-up steps,\n"
     "      threads 0 = every core, 1 substep, 10 velocity and 2 position iterations,\n"
@@ -58,7 +59,8 @@ constexpr const char* kUsage =
     "      done, world-steps/s and the time left; Ctrl-C stops at the next step,\n"
     "      reports the steps done and exits with 130 (a second Ctrl-C kills);\n"
     "      --record FILE writes worlds LIST (default 0) every step to the NPZ file\n"
-    "      FILE, which must not exist, docs/recording.md)\n"
+    "      FILE, which must not exist, docs/recording.md); --profile adds where the\n"
+    "      timed steps' time went, phase by phase (BatchOptions::profile_phases)\n"
     "  manyworlds plan --scene ID     prints what one step of the scene runs\n"
     "  manyworlds scenes              lists every scene id: bodies, constraints and\n"
     "                                 what it tests\n"
@@ -143,7 +145,8 @@ int Run(int argc, char** argv) {
                         {"--scene", "--worlds", "--steps", "--threads", "--substeps",
                          "--velocity-iterations", "--position-iterations", "--warmup",
                          "--seed", "--mass-range-limit", tools::kRecordOption,
-                         tools::kRecordWorldsOption});
+                         tools::kRecordWorldsOption},
+                        {"--profile"});
   Scene scene = SceneOf(options);
   const std::string id = options.Text("--scene");
   const std::string mass_range = MassRangeLimitOf(options, scene);
@@ -153,6 +156,7 @@ int Run(int argc, char** argv) {
   const std::uint64_t seed = options.Number("--seed", 1, 0, UINT64_MAX);
   BatchOptions batch_options;
   batch_options.threads = int(options.Number("--threads", 0, 0, 4096));
+  batch_options.profile_phases = options.Has("--profile");
   // The spec's defaults (dt 1/60 s, gravity -9.81 Y, Baumgarte 0.2), or the
   // stress scene's own dt.
   StepSettings settings = SceneStepSettings(options.Text("--scene"));
@@ -175,6 +179,7 @@ int Run(int argc, char** argv) {
     recording.Capture(batch, step + 1);
     progress.Update(step + 1);
   }
+  batch.ResetPhaseProfile();  // --profile: the timed steps only
   const auto start = std::chrono::steady_clock::now();
   for (; step < warmup + steps && !sigint.requested(); ++step) {
     actions.Apply(batch, step, seed);

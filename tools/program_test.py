@@ -16,6 +16,9 @@ Usage: program_test.py MANYWORLDS CASE, CASE one of
                  before it ends, and a finished run's stdout is only the report
   sigint         SIGINT mid-run: the report says it was interrupted and after
                  how many steps, fewer than asked; exit code 130
+  profile        `run --profile`: the report lists every phase with ns per
+                 world-step and shares adding up to 100 %; without --profile
+                 there is no phase list
 """
 
 import os
@@ -233,7 +236,33 @@ def case_sigint():
         fail(f"the timed line does not add up to {done} steps: {stdout!r}")
 
 
+PHASES = ("forces", "setup", "warm_start", "velocity", "integration", "position", "finish")
+
+
+def case_profile():
+    args = ["run", "--scene", "cartpole", "--worlds", "64", "--steps", "20", "--threads", "1"]
+    result = run(args + ["--profile"])
+    if result.returncode != 0 or result.stderr:
+        fail(f"exit code {result.returncode}, stderr {result.stderr!r}")
+    if not re.search(r"^phases: +ns per world-step", result.stdout, re.M):
+        fail(f"no 'phases:' line in the report: {result.stdout!r}")
+    shares = []
+    for phase in PHASES:
+        found = re.search(rf"^  {phase} +([0-9.e+-]+) ns +([0-9.]+) %$", result.stdout, re.M)
+        if not found:
+            fail(f"phase {phase} missing from the report: {result.stdout!r}")
+        if not float(found.group(1)) > 0:
+            fail(f"phase {phase} took no time: {found.group(0)!r}")
+        shares.append(float(found.group(2)))
+    if abs(sum(shares) - 100.0) > 0.5:
+        fail(f"shares add up to {sum(shares)} %, not 100")
+    plain = run(args)
+    if plain.returncode != 0 or "phases:" in plain.stdout:
+        fail(f"a run without --profile lists phases or failed: {plain.stdout!r}")
+
+
 CASES = {
+    "profile": case_profile,
     "errors": case_errors,
     "unknown-scene": case_unknown_scene,
     "scenes": case_scenes,

@@ -92,6 +92,21 @@ void PrintRunReport(const Batch& batch, const SceneActions& actions, const RunFa
     std::printf("throughput:           none (no timed step)\n");
     std::printf("time per world-step:  none (no timed step)\n");
   }
+  // --profile: the timed steps' phases (the profile is reset after the
+  // warm-up), in thread time per world-step, so they add up to the time per
+  // world-step times the threads, less scheduling.
+  const PhaseProfile profile = batch.GetPhaseProfile();
+  if (profile.world_steps > 0) {
+    double total = 0.0;
+    for (double seconds : profile.seconds) total += seconds;
+    std::printf("phases:               ns per world-step (thread time) and share, %.4g ns in all\n",
+                total * 1e9 / double(profile.world_steps));
+    for (std::size_t p = 0; p < kStepPhaseCount; ++p) {
+      std::printf("  %-19s %8.4g ns  %4.1f %%\n", StepPhaseName(StepPhase(p)),
+                  profile.seconds[p] * 1e9 / double(profile.world_steps),
+                  total > 0 ? 100.0 * profile.seconds[p] / total : 0.0);
+    }
+  }
   std::printf("memory:               %zu bytes per world (state, parameters, scratch)\n",
               batch.BytesPerWorld());
   // batch/constraint_error.h: each world's worst row of each unit, measured
