@@ -122,6 +122,12 @@ Batch::Impl::Impl(const Scene& scene, std::size_t world_count, BatchOptions opti
       arena_(threads_),
       blocks_per_task_(options.blocks_per_task),
       profile_phases_(options.profile_phases) {
+  // Both tables are built for the same Highway targets; a missing one would
+  // be a build error, not a user's.
+  if (joint_kernels_ == nullptr) {
+    throw std::logic_error(std::string("manyworlds: no joint-coordinate kernels for target ") +
+                           kernels_->target.name);
+  }
   WriteInitialBlock(scene_, plan_, Bytes(initial_.data()));
   for (std::size_t block = 0; block < block_count_; ++block) {
     std::copy(initial_.begin(), initial_.end(), storage_.begin() + block * arrays_per_block_);

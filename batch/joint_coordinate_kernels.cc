@@ -28,7 +28,7 @@
 //
 // The same formulas as the double per-lane read-out (joint_coordinates.cc),
 // which stays as the reference the tests compare every target with
-// (tests/joint_coordinates_test.cc). Why SIMD: per world in double, the
+// (tests/joint_coordinate_kernels_test.cc). Why SIMD: per world in double, the
 // cartpole's two constraints cost about as much as a step of the world
 // (docs/python.md, "Overhead of a Python step loop").
 

@@ -24,6 +24,9 @@ namespace {
 // every world that some of them point into (a deque: its elements never
 // move while more are added).
 struct StepActions {
+  // A reference to every array: the step runs without the GIL, and another
+  // Python thread could meanwhile drop the caller's dict entries.
+  std::vector<py::object> keep_alive;
   std::deque<PerWorldFloats> per_world_numbers;
   std::deque<std::string> names;  // "body_forces[1]", kept for the checks' messages
   std::vector<StepAction> actions;
@@ -43,14 +46,17 @@ void AddActions(StepActions& out, const Batch& batch, py::handle keyword, const 
                          "}, got " + std::string(py::str(py::type::handle_of(keyword).attr("__name__"))));
   }
   for (const auto& [key, values] : py::reinterpret_borrow<py::dict>(keyword)) {
-    if (!py::isinstance<py::int_>(key)) {
+    // Any integer (int, numpy integers: whatever has __index__), as indices are.
+    if (!PyIndex_Check(key.ptr())) {
       throw py::type_error(std::string(name) + ": keys are " +
                            (of_body ? "body" : "constraint") + " indices (int), got " +
                            std::string(py::repr(key)));
     }
+    const std::int64_t key_value = PyNumber_AsSsize_t(key.ptr(), nullptr);
+    if (key_value == -1 && PyErr_Occurred()) throw py::error_already_set();
     const std::size_t index =
-        of_body ? CheckedIndex(key.cast<std::int64_t>(), batch.body_count(), "body")
-                : CheckedIndex(key.cast<std::int64_t>(), batch.constraint_count(), "constraint");
+        of_body ? CheckedIndex(key_value, batch.body_count(), "body")
+                : CheckedIndex(key_value, batch.constraint_count(), "constraint");
     const std::string& what = out.names.emplace_back(std::string(name) + "[" +
                                                      std::to_string(index) + "]");
     std::span<const float> per_world;
@@ -61,6 +67,7 @@ void AddActions(StepActions& out, const Batch& batch, py::handle keyword, const 
       per_world =
           out.per_world_numbers.emplace_back(values, what.c_str(), batch.world_count()).Span();
     }
+    out.keep_alive.push_back(py::reinterpret_borrow<py::object>(values));
     out.actions.push_back({kind, index, per_world});
   }
 }

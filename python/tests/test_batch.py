@@ -438,7 +438,8 @@ def test_fused_actions_give_the_bits_of_separate_calls(threads):
         separate.set_target_positions(RAIL, positions)
         separate.step()
         separate.reset(done)
-        fused.step(body_forces={CART: forces}, body_torques={POLE: torques},
+        # numpy integer keys work as indices do
+        fused.step(body_forces={CART: forces}, body_torques={np.int64(POLE): torques},
                    target_velocities={POLE_HINGE: velocity}, target_positions={RAIL: positions},
                    reset_mask=done, state_out=state_out)
         assert_same_bits(state_out, separate.get_state())
