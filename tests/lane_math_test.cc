@@ -312,17 +312,20 @@ TEST_P(LaneMathTest, QuatFromAxisAngleMatchesReference) {
 }
 
 // Lanes of AddRotationStep: below the 1e-6 threshold (q must stay
-// bit-identical), just above it (q must change), moderate and large angles.
-enum class StepKind { kTiny, kJustAbove, kModerate, kLarge };
+// bit-identical), just above it (q must change), moderate and large angles;
+// and blocks of small angles only (up to 0.5 rad, the position corrections'
+// range), so that a path taken only when no lane of a chunk is large would
+// be tested too.
+enum class StepKind { kTiny, kJustAbove, kModerate, kLarge, kSmallTaylor };
 
-TEST_P(LaneMathTest, AddRotationStepMatchesReferenceAndKeepsTinyStepsExact) {
-  Random random(606);
+void CheckAddRotationStep(const LaneMathKernels& kernels, Random& random,
+                          const std::array<StepKind, 4>& kind_of_lane_mod_4) {
   for (std::size_t block = 0; block < kBlocks; ++block) {
     QuatLanes q, before;
     Vec3Lanes theta;
     std::array<StepKind, kLaneWidth> kinds;
     for (std::size_t lane = 0; lane < kLaneWidth; ++lane) {
-      kinds[lane] = StepKind(lane % 4);
+      kinds[lane] = kind_of_lane_mod_4[lane % 4];
       double length = 0;
       switch (kinds[lane]) {
         // Exactly zero in one lane per block, else up to 0.9e-6: clear of the
@@ -331,12 +334,17 @@ TEST_P(LaneMathTest, AddRotationStepMatchesReferenceAndKeepsTinyStepsExact) {
         case StepKind::kJustAbove: length = random.Uniform(2e-6, 1e-5); break;
         case StepKind::kModerate: length = random.LogUniform(1e-3, 1.0); break;
         case StepKind::kLarge: length = random.LogUniform(1.0, 1000.0); break;
+        // Up to 0.5 rad, which lane 3 of every block hits (to float
+        // rounding, just below or above).
+        case StepKind::kSmallTaylor:
+          length = lane == 3 ? 0.5 : random.LogUniform(1e-5, 0.5);
+          break;
       }
       SetLaneQuat(q, lane, FloatUnitQuat(random));
       SetLaneVec3(theta, lane, random.UnitVector() * length);
     }
     before = q;
-    Kernels().add_rotation_step(q, theta);
+    kernels.add_rotation_step(q, theta);
     for (std::size_t lane = 0; lane < kLaneWidth; ++lane) {
       const Vec3d t = LaneVec3(theta, lane);
       const std::string label =
@@ -362,6 +370,19 @@ TEST_P(LaneMathTest, AddRotationStepMatchesReferenceAndKeepsTinyStepsExact) {
       ExpectQuatNear(LaneQuat(q, lane), expected, Tolerance(std::max(1.0, t.norm())), label);
     }
   }
+}
+
+TEST_P(LaneMathTest, AddRotationStepMatchesReferenceAndKeepsTinyStepsExact) {
+  Random random(606);
+  CheckAddRotationStep(Kernels(), random, {StepKind::kTiny, StepKind::kJustAbove,
+                                           StepKind::kModerate, StepKind::kLarge});
+}
+
+// Every lane within 0.5 rad, against the same reference.
+TEST_P(LaneMathTest, AddRotationStepOfSmallAnglesMatchesReference) {
+  Random random(607);
+  CheckAddRotationStep(Kernels(), random, {StepKind::kTiny, StepKind::kJustAbove,
+                                           StepKind::kSmallTaylor, StepKind::kSmallTaylor});
 }
 
 // ---------------------------------------------------------- inverse inertia
