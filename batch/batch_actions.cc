@@ -1,7 +1,8 @@
 // Batch: actions (forces, torques, motor and drive targets), per world or
-// for every world at once. The every-world forms of the RL loop's actions
-// (SetForces(body), SetTorques(body), SetTargetVelocities,
-// SetTargetPositions) are StepActions: checked once (CheckAction), then
+// for every world at once. The every-world forms (SetForces(body),
+// SetTorques(body), SetTargetVelocities, SetTargetPositions and the drive
+// targets' SetTargetOrientations ... SetTargetLinearVelocities) are
+// StepActions: checked once (CheckAction), then
 // written block by block (WriteActionOfBlock), here over every block and
 // by Step(settings, io) in each block's own task (batch_fused_io.cc), so
 // the two write the same bits.
@@ -30,8 +31,22 @@ const char* SettingName(ActionKind kind) {
     case ActionKind::kTorque: return "a torque";
     case ActionKind::kTargetVelocity: return "a target velocity";
     case ActionKind::kTargetPosition: return "a target position";
+    case ActionKind::kTargetOrientation: return "a target orientation";
+    case ActionKind::kTargetAngularVelocity: return "a target angular velocity";
+    case ActionKind::kTargetTranslation: return "a target translation";
+    case ActionKind::kTargetLinearVelocity: return "a target linear velocity";
   }
   return "an action";
+}
+
+// Floats per world of a drive target.
+std::size_t DriveTargetWidth(ActionKind kind) {
+  return kind == ActionKind::kTargetOrientation ? 4 : 3;
+}
+
+bool IsZeroQuaternion(const float* q) {
+  return std::sqrt(double(q[0]) * q[0] + double(q[1]) * q[1] + double(q[2]) * q[2] +
+                   double(q[3]) * q[3]) == 0.0;
 }
 
 }  // namespace
@@ -69,10 +84,67 @@ Batch::Impl::CheckedAction Batch::Impl::CheckAction(const StepAction& action,
       if (!velocity && c.has_limits()) checked.clamp_into_limits = &c;
       return checked;
     }
+    case ActionKind::kTargetOrientation:
+    case ActionKind::kTargetAngularVelocity: {
+      const ConstraintPlan& c = WithRotationDrives(action.index, setting);
+      CheckSize(action.per_world.size(), world_count_ * DriveTargetWidth(action.kind), what);
+      if (action.kind == ActionKind::kTargetOrientation) {
+        for (std::size_t w = 0; w < world_count_; ++w) {
+          if (IsZeroQuaternion(action.per_world.data() + w * 4)) {
+            throw SceneError(InWorld(c.label, w) + ": target orientation is a zero quaternion");
+          }
+        }
+      }
+      checked.offset = c.rotation_drive_offset;
+      return checked;
+    }
+    case ActionKind::kTargetTranslation:
+    case ActionKind::kTargetLinearVelocity: {
+      const ConstraintPlan& c = WithTranslationDrives(action.index, setting);
+      CheckSize(action.per_world.size(), world_count_ * 3, what);
+      checked.offset = c.motor_offset;
+      return checked;
+    }
   }
   throw std::invalid_argument(std::string(what) + ": kind " +
                               std::to_string(unsigned(action.kind)) +
-                              " is not an ActionKind (accepted 0 to 3)");
+                              " is not an ActionKind (accepted 0 to 7)");
+}
+
+// Orientations normalised in double, as given otherwise; the values given
+// are noted (a NaN anywhere flags the world).
+void Batch::Impl::WriteDriveTarget(ActionKind kind, std::byte* block, std::size_t offset,
+                                   std::size_t world, const float* v) {
+  const std::size_t l = Lane(world);
+  switch (kind) {
+    case ActionKind::kTargetOrientation: {
+      QuatLanes& target = At<RotationDriveLanes>(block, offset).target_orientation;
+      const double length = std::sqrt(double(v[0]) * v[0] + double(v[1]) * v[1] +
+                                      double(v[2]) * v[2] + double(v[3]) * v[3]);
+      target.x[l] = float(v[0] / length);
+      target.y[l] = float(v[1] / length);
+      target.z[l] = float(v[2] / length);
+      target.w[l] = float(v[3] / length);
+      NoteInput(world, v[0], v[1], v[2], v[3]);
+      return;
+    }
+    case ActionKind::kTargetAngularVelocity: {
+      RotationDriveLanes& drive = At<RotationDriveLanes>(block, offset);
+      for (int i = 0; i < 3; ++i) drive.rows[i].target_velocity[l] = v[i];
+      break;
+    }
+    case ActionKind::kTargetTranslation:
+    case ActionKind::kTargetLinearVelocity: {
+      LinearMotorLanes* drives = &At<LinearMotorLanes>(block, offset);
+      for (int i = 0; i < 3; ++i) {
+        (kind == ActionKind::kTargetTranslation ? drives[i].target_position
+                                                : drives[i].target_velocity)[l] = v[i];
+      }
+      break;
+    }
+    default: return;
+  }
+  NoteInput(world, v[0], v[1], v[2]);
 }
 
 // The block's lane arrays located once (RL loops write their actions every
@@ -88,6 +160,13 @@ void Batch::Impl::WriteActionOfBlock(std::size_t block, const CheckedAction& act
       v.y[l] = value[1];
       v.z[l] = value[2];
       NoteInput(world, value[0], value[1], value[2]);
+    }
+    return;
+  }
+  if (action.kind != ActionKind::kTargetVelocity && action.kind != ActionKind::kTargetPosition) {
+    const std::size_t width = DriveTargetWidth(action.kind);
+    for (auto [world, end] = WorldsOf(block); world < end; ++world) {
+      WriteDriveTarget(action.kind, Block(block), action.offset, world, per_world + world * width);
     }
     return;
   }
@@ -124,27 +203,37 @@ void Batch::Impl::RefuseMultiAxis(const ConstraintPlan& c, const char* what) {
   }
 }
 
-RotationDriveLanes& Batch::Impl::RotationDrive(std::size_t world, std::size_t constraint,
-                                               const char* what) {
-  CheckWorld(world);
+const ConstraintPlan& Batch::Impl::WithRotationDrives(std::size_t constraint,
+                                                      const char* what) const {
   const ConstraintPlan& c = Constraint(constraint);
   if (!c.has_rotation_drives()) {
     throw SceneError(c.label + ": " + what +
                      " needs rotation motors or friction (a swing-twist or six-DOF "
                      "constraint with a motor state or max friction)");
   }
-  return In<RotationDriveLanes>(world, c.rotation_drive_offset);
+  return c;
 }
 
-LinearMotorLanes* Batch::Impl::TranslationDrives(std::size_t world, std::size_t constraint,
-                                                 const char* what) {
-  CheckWorld(world);
+const ConstraintPlan& Batch::Impl::WithTranslationDrives(std::size_t constraint,
+                                                         const char* what) const {
   const ConstraintPlan& c = Constraint(constraint);
   if (c.type != ConstraintType::kSixDof || !c.has_motor()) {
     throw SceneError(c.label + ": " + what +
                      " needs a six-DOF constraint with translation motors or friction");
   }
-  return &In<LinearMotorLanes>(world, c.motor_offset);
+  return c;
+}
+
+RotationDriveLanes& Batch::Impl::RotationDrive(std::size_t world, std::size_t constraint,
+                                               const char* what) {
+  CheckWorld(world);
+  return In<RotationDriveLanes>(world, WithRotationDrives(constraint, what).rotation_drive_offset);
+}
+
+LinearMotorLanes* Batch::Impl::TranslationDrives(std::size_t world, std::size_t constraint,
+                                                 const char* what) {
+  CheckWorld(world);
+  return &In<LinearMotorLanes>(world, WithTranslationDrives(constraint, what).motor_offset);
 }
 
 float Batch::Impl::ClampedTarget(std::size_t world, const ConstraintPlan& c,
@@ -234,47 +323,67 @@ void Batch::SetTargetPosition(std::size_t world, std::size_t constraint, float p
   impl().NoteInput(world, stored);
 }
 
+// The per-world drive setters: checks, then the writer every form shares.
 void Batch::SetTargetOrientation(std::size_t world, std::size_t constraint,
                                  Quaternion orientation) {
-  RotationDriveLanes& drive = impl().RotationDrive(world, constraint, "a target orientation");
-  const double length = std::sqrt(double(orientation[0]) * orientation[0] +
-                                  double(orientation[1]) * orientation[1] +
-                                  double(orientation[2]) * orientation[2] +
-                                  double(orientation[3]) * orientation[3]);
-  if (length == 0.0) {
-    throw SceneError(impl().Constraint(constraint).label +
+  Impl& batch = impl();
+  batch.RotationDrive(world, constraint, "a target orientation");  // checks
+  if (IsZeroQuaternion(orientation.data())) {
+    throw SceneError(batch.Constraint(constraint).label +
                      ": target orientation is a zero quaternion");
   }
-  const std::size_t l = Impl::Lane(world);
-  drive.target_orientation.x[l] = float(orientation[0] / length);
-  drive.target_orientation.y[l] = float(orientation[1] / length);
-  drive.target_orientation.z[l] = float(orientation[2] / length);
-  drive.target_orientation.w[l] = float(orientation[3] / length);
-  impl().NoteInput(world, orientation[0], orientation[1], orientation[2], orientation[3]);
+  batch.WriteDriveTarget(ActionKind::kTargetOrientation, batch.Block(world / kLaneWidth),
+                         batch.Constraint(constraint).rotation_drive_offset, world,
+                         orientation.data());
 }
 
 void Batch::SetTargetAngularVelocity(std::size_t world, std::size_t constraint,
                                      Float3 angular_velocity) {
-  RotationDriveLanes& drive =
-      impl().RotationDrive(world, constraint, "a target angular velocity");
-  for (int i = 0; i < 3; ++i) {
-    drive.rows[i].target_velocity[Impl::Lane(world)] = angular_velocity[i];
-  }
-  impl().NoteInput(world, angular_velocity[0], angular_velocity[1], angular_velocity[2]);
+  Impl& batch = impl();
+  batch.RotationDrive(world, constraint, "a target angular velocity");
+  batch.WriteDriveTarget(ActionKind::kTargetAngularVelocity, batch.Block(world / kLaneWidth),
+                         batch.Constraint(constraint).rotation_drive_offset, world,
+                         angular_velocity.data());
 }
 
 void Batch::SetTargetTranslation(std::size_t world, std::size_t constraint,
                                  Float3 translation) {
-  LinearMotorLanes* drives = impl().TranslationDrives(world, constraint, "a target translation");
-  for (int i = 0; i < 3; ++i) drives[i].target_position[Impl::Lane(world)] = translation[i];
-  impl().NoteInput(world, translation[0], translation[1], translation[2]);
+  Impl& batch = impl();
+  batch.TranslationDrives(world, constraint, "a target translation");
+  batch.WriteDriveTarget(ActionKind::kTargetTranslation, batch.Block(world / kLaneWidth),
+                         batch.Constraint(constraint).motor_offset, world, translation.data());
 }
 
 void Batch::SetTargetLinearVelocity(std::size_t world, std::size_t constraint, Float3 velocity) {
-  LinearMotorLanes* drives =
-      impl().TranslationDrives(world, constraint, "a target linear velocity");
-  for (int i = 0; i < 3; ++i) drives[i].target_velocity[Impl::Lane(world)] = velocity[i];
-  impl().NoteInput(world, velocity[0], velocity[1], velocity[2]);
+  Impl& batch = impl();
+  batch.TranslationDrives(world, constraint, "a target linear velocity");
+  batch.WriteDriveTarget(ActionKind::kTargetLinearVelocity, batch.Block(world / kLaneWidth),
+                         batch.Constraint(constraint).motor_offset, world, velocity.data());
+}
+
+void Batch::SetTargetOrientations(std::size_t constraint, std::span<const float> per_world) {
+  const Impl::Exclusive exclusive(impl(), "SetTargetOrientations");
+  impl().WriteAction(impl().CheckAction(
+      {ActionKind::kTargetOrientation, constraint, per_world}, "SetTargetOrientations"));
+}
+
+void Batch::SetTargetAngularVelocities(std::size_t constraint,
+                                       std::span<const float> per_world) {
+  const Impl::Exclusive exclusive(impl(), "SetTargetAngularVelocities");
+  impl().WriteAction(impl().CheckAction(
+      {ActionKind::kTargetAngularVelocity, constraint, per_world}, "SetTargetAngularVelocities"));
+}
+
+void Batch::SetTargetTranslations(std::size_t constraint, std::span<const float> per_world) {
+  const Impl::Exclusive exclusive(impl(), "SetTargetTranslations");
+  impl().WriteAction(impl().CheckAction(
+      {ActionKind::kTargetTranslation, constraint, per_world}, "SetTargetTranslations"));
+}
+
+void Batch::SetTargetLinearVelocities(std::size_t constraint, std::span<const float> per_world) {
+  const Impl::Exclusive exclusive(impl(), "SetTargetLinearVelocities");
+  impl().WriteAction(impl().CheckAction(
+      {ActionKind::kTargetLinearVelocity, constraint, per_world}, "SetTargetLinearVelocities"));
 }
 
 void Batch::SetTargetVelocities(std::size_t constraint, std::span<const float> per_world) {

@@ -82,7 +82,10 @@ class Batch::Impl {
   // starts in a block, and the constraint whose limits clamp a position.
   struct CheckedAction {
     ActionKind kind;
-    std::size_t offset;  // bytes, in a block: Vec3Lanes or one LaneArray
+    // Bytes, in a block: the Vec3Lanes of a force or torque, the LaneArray
+    // of a motor target, the RotationDriveLanes or the first of the three
+    // LinearMotorLanes of a drive target.
+    std::size_t offset;
     const ConstraintPlan* clamp_into_limits = nullptr;
     const float* per_world;
   };
@@ -220,6 +223,13 @@ class Batch::Impl {
   RotationDriveLanes& RotationDrive(std::size_t world, std::size_t constraint, const char* what);
   LinearMotorLanes* TranslationDrives(std::size_t world, std::size_t constraint,
                                       const char* what);
+  // The constraint's plan if it has rotation (translation) drives, else
+  // SceneError naming it and `what`.
+  const ConstraintPlan& WithRotationDrives(std::size_t constraint, const char* what) const;
+  const ConstraintPlan& WithTranslationDrives(std::size_t constraint, const char* what) const;
+  // One lane's drive targets, as every form writes them (bits identical).
+  void WriteDriveTarget(ActionKind kind, std::byte* block, std::size_t offset, std::size_t world,
+                        const float* values);
   template <class Fn>
   void WithMotor(std::size_t world, std::size_t constraint, const char* what, Fn&& fn) {
     CheckWorld(world);

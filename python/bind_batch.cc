@@ -180,39 +180,22 @@ void BindJointCoordinates(py::class_<Batch>& cls) {
           "of the last step: float32 [world, motor_force_count(constraint)].");
 }
 
-// A target of three or four floats per world, written through the per-world
-// setter `set` (SetTargetOrientation etc.; the C++ API has no array form).
-template <std::size_t N, class Target>
+// A drive target of every world, float32 [world, width], through the C++
+// array setter `set` (which refuses a zero quaternion in any world, naming
+// it, before writing any).
 void SetEveryWorld(Batch& batch, std::int64_t constraint, py::handle values, const char* name,
-                   void (Batch::*set)(std::size_t, std::size_t, Target)) {
+                   py::ssize_t width,
+                   void (Batch::*set)(std::size_t, std::span<const float>)) {
   const std::size_t c = CheckedIndex(constraint, batch.constraint_count(), "constraint");
-  const auto data =
-      ArrayArgument<float>(values, name, {Worlds(batch), static_cast<py::ssize_t>(N)});
-  if constexpr (N == 4) {
-    // The only per-world refusal of a target: a zero quaternion. Found
-    // first, so that nothing is written (a wrong constraint type is refused
-    // at world 0, before any write, by the setter itself).
-    for (std::size_t w = 0; w < batch.world_count(); ++w) {
-      const float* q = data.data() + w * 4;
-      if (q[0] == 0.0f && q[1] == 0.0f && q[2] == 0.0f && q[3] == 0.0f) {
-        throw py::value_error(std::string(name) + ": world " + std::to_string(w) +
-                              ": target orientation is a zero quaternion (nothing was written)");
-      }
-    }
-  }
-  for (std::size_t w = 0; w < batch.world_count(); ++w) {
-    Target target;
-    std::copy_n(data.data() + w * N, N, target.begin());
-    (batch.*set)(w, c, target);
-  }
+  (batch.*set)(c, ArrayArgument<float>(values, name, {Worlds(batch), width}));
 }
 
 void BindRotationAndTranslationTargets(py::class_<Batch>& cls) {
   cls.def(
          "set_target_orientations",
          [](Batch& batch, std::int64_t constraint, py::handle orientations) {
-           SetEveryWorld<4>(batch, constraint, orientations, "orientations",
-                            &Batch::SetTargetOrientation);
+           SetEveryWorld(batch, constraint, orientations, "orientations", 4,
+                         &Batch::SetTargetOrientations);
          },
          py::arg("constraint"), py::arg("orientations"),
          "Rotation drive targets of a swing-twist or six-DOF constraint: body 2's frame in "
@@ -221,24 +204,24 @@ void BindRotationAndTranslationTargets(py::class_<Batch>& cls) {
       .def(
           "set_target_angular_velocities",
           [](Batch& batch, std::int64_t constraint, py::handle velocities) {
-            SetEveryWorld<3>(batch, constraint, velocities, "velocities",
-                             &Batch::SetTargetAngularVelocity);
+            SetEveryWorld(batch, constraint, velocities, "velocities", 3,
+                          &Batch::SetTargetAngularVelocities);
           },
           py::arg("constraint"), py::arg("velocities"),
           "Swing-twist or six-DOF: rad/s about body 2's frame axes, float32 [world, 3].")
       .def(
           "set_target_translations",
           [](Batch& batch, std::int64_t constraint, py::handle translations) {
-            SetEveryWorld<3>(batch, constraint, translations, "translations",
-                             &Batch::SetTargetTranslation);
+            SetEveryWorld(batch, constraint, translations, "translations", 3,
+                          &Batch::SetTargetTranslations);
           },
           py::arg("constraint"), py::arg("translations"),
           "Six-DOF: target displacement (m) in body 1's frame, float32 [world, 3].")
       .def(
           "set_target_linear_velocities",
           [](Batch& batch, std::int64_t constraint, py::handle velocities) {
-            SetEveryWorld<3>(batch, constraint, velocities, "velocities",
-                             &Batch::SetTargetLinearVelocity);
+            SetEveryWorld(batch, constraint, velocities, "velocities", 3,
+                          &Batch::SetTargetLinearVelocities);
           },
           py::arg("constraint"), py::arg("velocities"),
           "Six-DOF: target velocity (m/s) in body 1's frame, float32 [world, 3].");

@@ -39,10 +39,15 @@ void AddActions(StepActions& out, const Batch& batch, py::handle keyword, const 
                 ActionKind kind) {
   if (keyword.is_none()) return;
   const bool of_body = kind == ActionKind::kForce || kind == ActionKind::kTorque;
+  const bool one_per_world =
+      kind == ActionKind::kTargetVelocity || kind == ActionKind::kTargetPosition;
+  const py::ssize_t width = kind == ActionKind::kTargetOrientation ? 4 : 3;
   if (!py::isinstance<py::dict>(keyword)) {
     throw py::type_error(std::string(name) + ": expected a dict {" +
-                         (of_body ? "body: float32 array [world, 3]"
-                                  : "constraint: float32 array [world] or a number") +
+                         (of_body         ? std::string("body: float32 array [world, 3]")
+                          : one_per_world ? std::string("constraint: float32 array [world] or a number")
+                                          : "constraint: float32 array [world, " +
+                                                std::to_string(width) + "]") +
                          "}, got " + std::string(py::str(py::type::handle_of(keyword).attr("__name__"))));
   }
   for (const auto& [key, values] : py::reinterpret_borrow<py::dict>(keyword)) {
@@ -60,12 +65,12 @@ void AddActions(StepActions& out, const Batch& batch, py::handle keyword, const 
     const std::string& what = out.names.emplace_back(std::string(name) + "[" +
                                                      std::to_string(index) + "]");
     std::span<const float> per_world;
-    if (of_body) {
-      per_world = ArrayArgument<float>(
-          values, what.c_str(), {static_cast<py::ssize_t>(batch.world_count()), 3});
-    } else {
+    if (one_per_world) {
       per_world =
           out.per_world_numbers.emplace_back(values, what.c_str(), batch.world_count()).Span();
+    } else {
+      per_world = ArrayArgument<float>(
+          values, what.c_str(), {static_cast<py::ssize_t>(batch.world_count()), width});
     }
     out.keep_alive.push_back(py::reinterpret_borrow<py::object>(values));
     out.actions.push_back({kind, index, per_world});
@@ -79,6 +84,8 @@ void BindStep(py::class_<Batch>& cls) {
       "step",
       [](Batch& batch, const StepSettings& settings, py::handle body_forces,
          py::handle body_torques, py::handle target_velocities, py::handle target_positions,
+         py::handle target_orientations, py::handle target_angular_velocities,
+         py::handle target_translations, py::handle target_linear_velocities,
          py::handle reset_mask, py::handle reset_states, py::handle state_out,
          py::handle joints_out) {
         // A copy: another Python thread may change the settings object
@@ -90,12 +97,25 @@ void BindStep(py::class_<Batch>& cls) {
         // the C++ call checks the actions against the scene (a static
         // body, a constraint without a motor) before writing any.
         StepActions actions;
-        AddActions(actions, batch, body_forces, "body_forces", ActionKind::kForce);
-        AddActions(actions, batch, body_torques, "body_torques", ActionKind::kTorque);
-        AddActions(actions, batch, target_velocities, "target_velocities",
-                   ActionKind::kTargetVelocity);
-        AddActions(actions, batch, target_positions, "target_positions",
-                   ActionKind::kTargetPosition);
+        const struct {
+          py::handle values;
+          const char* name;
+          ActionKind kind;
+        } keywords[] = {
+            {body_forces, "body_forces", ActionKind::kForce},
+            {body_torques, "body_torques", ActionKind::kTorque},
+            {target_velocities, "target_velocities", ActionKind::kTargetVelocity},
+            {target_positions, "target_positions", ActionKind::kTargetPosition},
+            {target_orientations, "target_orientations", ActionKind::kTargetOrientation},
+            {target_angular_velocities, "target_angular_velocities",
+             ActionKind::kTargetAngularVelocity},
+            {target_translations, "target_translations", ActionKind::kTargetTranslation},
+            {target_linear_velocities, "target_linear_velocities",
+             ActionKind::kTargetLinearVelocity},
+        };
+        for (const auto& keyword : keywords) {
+          AddActions(actions, batch, keyword.values, keyword.name, keyword.kind);
+        }
         StepIo io;
         io.actions = actions.actions;
         io.reset_mask = MaskArgument(reset_mask, "reset_mask", batch.world_count());
@@ -120,7 +140,10 @@ void BindStep(py::class_<Batch>& cls) {
       py::arg_v("settings", StepSettings{}, "StepSettings()"), py::kw_only(),
       py::arg("body_forces") = py::none(), py::arg("body_torques") = py::none(),
       py::arg("target_velocities") = py::none(), py::arg("target_positions") = py::none(),
-      py::arg("reset_mask") = py::none(), py::arg("reset_states") = py::none(),
+      py::arg("target_orientations") = py::none(),
+      py::arg("target_angular_velocities") = py::none(),
+      py::arg("target_translations") = py::none(),
+      py::arg("target_linear_velocities") = py::none(), py::arg("reset_mask") = py::none(), py::arg("reset_states") = py::none(),
       py::arg("state_out") = py::none(), py::arg("joints_out") = py::none(),
       "Steps every world by settings.delta_time (the GIL is released meanwhile). The "
       "keywords do an RL loop's actions, resets and observation reads inside the step's "
@@ -128,8 +151,11 @@ void BindStep(py::class_<Batch>& cls) {
       "a block steps, its actions are written: body_forces and body_torques, dicts {body: "
       "float32 [world, 3]}, as set_body_forces / set_body_torques; target_velocities and "
       "target_positions, dicts {constraint: float32 [world] or a number}, as "
-      "set_target_velocities / set_target_positions (in this order, each dict in its "
-      "order). After it steps, the worlds where reset_mask != 0 (bool or uint8 [world]) go "
+      "set_target_velocities / set_target_positions; the drives of swing-twist and six-DOF "
+      "constraints, target_orientations (float32 [world, 4]), target_angular_velocities, "
+      "target_translations and target_linear_velocities (float32 [world, 3]), dicts "
+      "{constraint: array}, as the set_target_* of the same names (all in this order, each "
+      "dict in its order). After it steps, the worlds where reset_mask != 0 (bool or uint8 [world]) go "
       "back to the scene's initial state, as reset(mask), or with reset_states (float32 "
       "[world, body, 13]) as reset_to(mask, reset_states); then state_out (float32 [world, "
       "body, 13]) is filled as get_state(out=) and joints_out (float32 [world, "

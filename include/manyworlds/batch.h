@@ -181,6 +181,11 @@ enum class ActionKind : std::uint8_t {
   kTorque,          // SetTorques(body, per_world): [world][3], N m, world space
   kTargetVelocity,  // SetTargetVelocities(constraint, per_world): [world]
   kTargetPosition,  // SetTargetPositions(constraint, per_world): [world]
+  // Drives of swing-twist and six-DOF constraints (per axis):
+  kTargetOrientation,      // SetTargetOrientations: [world][4] quaternion x, y, z, w
+  kTargetAngularVelocity,  // SetTargetAngularVelocities: [world][3] rad/s
+  kTargetTranslation,      // SetTargetTranslations (six-DOF): [world][3] m
+  kTargetLinearVelocity,   // SetTargetLinearVelocities (six-DOF): [world][3] m/s
 };
 struct StepAction {
   ActionKind kind;
@@ -334,6 +339,13 @@ class Batch {
   // the target displacement (m) and velocity (m/s) per axis.
   void SetTargetTranslation(std::size_t world, std::size_t constraint, Float3 translation);
   void SetTargetLinearVelocity(std::size_t world, std::size_t constraint, Float3 velocity);
+  // The same for every world at once: [world][4] orientations (a zero
+  // quaternion in any world is refused, naming it, before anything is
+  // written) and [world][3] velocities and translations.
+  void SetTargetOrientations(std::size_t constraint, std::span<const float> per_world);
+  void SetTargetAngularVelocities(std::size_t constraint, std::span<const float> per_world);
+  void SetTargetTranslations(std::size_t constraint, std::span<const float> per_world);
+  void SetTargetLinearVelocities(std::size_t constraint, std::span<const float> per_world);
 
   // ---- per-world parameters (domain randomisation); the scene's values are
   // the defaults, and a parameter nobody overrides costs nothing extra.

@@ -467,3 +467,39 @@ def test_phase_profile_counts_every_phase_and_keeps_the_bits():
     assert plain.phase_profile()["world_steps"] == 0
     profiled.reset_phase_profile()
     assert sum(profiled.phase_profile()["seconds"].values()) == 0
+
+
+def test_fused_drive_targets_give_the_bits_of_the_setters():
+    """step(target_orientations=, target_angular_velocities=,
+    target_translations=, target_linear_velocities=) equals the set_target_*
+    calls of the same names, then step(), bit for bit."""
+    scene = mw.Scene()
+    scene.add_body(mw.BodySettings(motion_type=mw.MotionType.STATIC))
+    scene.add_body(mw.BodySettings(position=(1, 0, 0)))
+    scene.add_body(mw.BodySettings(position=(-1, 0.5, 0)))
+    scene.add_constraint(mw.SwingTwistConstraintSettings(
+        body1=0, body2=1, normal_half_cone_angle=1.0, plane_half_cone_angle=1.0,
+        twist_min_angle=-1.0, twist_max_angle=1.0, swing_motor_state=mw.MotorState.POSITION,
+        twist_motor_state=mw.MotorState.POSITION))
+    mount = mw.SixDofConstraintSettings(body1=0, body2=2)
+    mount.motor_state = [mw.MotorState.VELOCITY] * 6
+    scene.add_constraint(mount)
+    separate, fused = mw.Batch(scene, WORLDS), mw.Batch(scene, WORLDS)
+    rng = np.random.default_rng(4)
+    for _ in range(6):
+        q = rng.normal(size=(WORLDS, 4)).astype(np.float32)
+        spin, move, speed = (rng.uniform(-1, 1, (WORLDS, 3)).astype(np.float32)
+                             for _ in range(3))
+        separate.set_target_orientations(0, q)
+        separate.set_target_angular_velocities(0, spin)
+        separate.set_target_translations(1, move)
+        separate.set_target_linear_velocities(1, speed)
+        separate.step()
+        fused.step(target_orientations={0: q}, target_angular_velocities={0: spin},
+                   target_translations={1: move}, target_linear_velocities={1: speed})
+        assert fused.snapshot().bytes() == separate.snapshot().bytes()
+    with pytest.raises(TypeError, match=r"target_orientations: expected a dict \{constraint: "
+                                        r"float32 array \[world, 4\]\}"):
+        fused.step(target_orientations=q)
+    with pytest.raises(ValueError, match=r"target_translations\[1\]: expected shape"):
+        fused.step(target_translations={1: q})

@@ -212,7 +212,7 @@ def test_zero_target_orientation_in_one_world_writes_nothing():
     batch.set_target_orientations(0, targets)
     targets[9] = 0.0
     assert_refused(batch, lambda: batch.set_target_orientations(0, targets), ValueError,
-                   "orientations: world 9: target orientation is a zero quaternion")
+                   "in world 9: target orientation is a zero quaternion")
 
 
 def test_bad_scenes_and_settings():
