@@ -52,7 +52,8 @@ Batch::Impl::BlockIo Batch::Impl::CheckedBlockIo(const StepIo& io) const {
   if (!io.joints_out.empty()) {
     CheckSize(io.joints_out.size(), world_count_ * checked.joints.per_world, "Step joints_out");
   }
-  checked.any = !io.actions.empty() || !io.reset_mask.empty() || !io.state_out.empty() || !io.joints_out.empty();
+  checked.any = !io.actions.empty() || !io.reset_mask.empty() || !io.state_out.empty() ||
+                !io.joints_out.empty();
   checked.reset_mask = io.reset_mask;
   checked.reset_states = io.reset_states;
   checked.state_out = io.state_out.empty() ? nullptr : io.state_out.data();

@@ -91,11 +91,23 @@ class Batch::Impl {
   };
   // Refuses (SceneError, std::out_of_range or std::invalid_argument naming
   // `what`) an action the separate call would refuse; writes nothing.
+  // CheckTarget checks the scene side only (body or constraint, kind).
+  CheckedAction CheckTarget(ActionKind kind, std::size_t index, const char* what) const;
   CheckedAction CheckAction(const StepAction& action, const char* what) const;
+  // One world's values into its lanes: the writer every form shares
+  // (batch_actions.cc), one instance per kind.
+  template <ActionKind kKind>
+  void WriteLane(const CheckedAction& action, std::byte* block, std::size_t world,
+                 const float* values);
   void WriteActionOfBlock(std::size_t block, const CheckedAction& action);
   void WriteAction(const CheckedAction& action) {
     for (std::size_t block = 0; block < block_count_; ++block) WriteActionOfBlock(block, action);
   }
+  void WriteActionOfWorld(ActionKind kind, std::size_t index, std::size_t world,
+                          const float* values);
+  void WriteEveryWorld(ActionKind kind, std::size_t index, std::span<const float> per_world,
+                       const char* call);
+  void WriteEveryBody(ActionKind kind, std::span<const float> values, const char* call);
   // The constraint's plan if it has a single motor (hinge, slider, path),
   // else SceneError naming it and `what`.
   const ConstraintPlan& SingleMotor(std::size_t constraint, const char* what) const;
@@ -220,16 +232,11 @@ class Batch::Impl {
 
   // ---- per-constraint parameters
   static void RefuseMultiAxis(const ConstraintPlan& c, const char* what);
-  RotationDriveLanes& RotationDrive(std::size_t world, std::size_t constraint, const char* what);
-  LinearMotorLanes* TranslationDrives(std::size_t world, std::size_t constraint,
-                                      const char* what);
   // The constraint's plan if it has rotation (translation) drives, else
   // SceneError naming it and `what`.
   const ConstraintPlan& WithRotationDrives(std::size_t constraint, const char* what) const;
   const ConstraintPlan& WithTranslationDrives(std::size_t constraint, const char* what) const;
-  // One lane's drive targets, as every form writes them (bits identical).
-  void WriteDriveTarget(ActionKind kind, std::byte* block, std::size_t offset, std::size_t world,
-                        const float* values);
+
   template <class Fn>
   void WithMotor(std::size_t world, std::size_t constraint, const char* what, Fn&& fn) {
     CheckWorld(world);

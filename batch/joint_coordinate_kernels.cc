@@ -192,10 +192,13 @@ std::size_t CoordinatesOfChunk(const Chunk& k, LaneVec* values) {
       RotationCoordinates(frame1, Mul(b2.q, k(s.frames.constraint_to_body2)), b1, b2, rotation);
       const Vec3 translation = InverseRotate(frame1, sep.u);
       const Vec3 velocity = InverseRotate(frame1, Add(sep.rate, Cross(sep.u, b1.w)));
-      const LaneVec ordered[12] = {translation.x, translation.y, translation.z, rotation[0],
-                                   rotation[1],   rotation[2],   velocity.x,    velocity.y,
-                                   velocity.z,    rotation[3],   rotation[4],   rotation[5]};
-      for (int i = 0; i < 12; ++i) values[i] = ordered[i];
+      // translations, angles, their rates, angular velocities
+      values[0] = translation.x, values[1] = translation.y, values[2] = translation.z;
+      values[6] = velocity.x, values[7] = velocity.y, values[8] = velocity.z;
+      for (int i = 0; i < 3; ++i) {
+        values[3 + i] = rotation[i];
+        values[9 + i] = rotation[3 + i];
+      }
       return 12;
     }
     case ConstraintType::kPath:  // per lane, by the caller

@@ -28,7 +28,6 @@ struct StepActions {
   // Python thread could meanwhile drop the caller's dict entries.
   std::vector<py::object> keep_alive;
   std::deque<PerWorldFloats> per_world_numbers;
-  std::deque<std::string> names;  // "body_forces[1]", kept for the checks' messages
   std::vector<StepAction> actions;
 };
 
@@ -62,8 +61,8 @@ void AddActions(StepActions& out, const Batch& batch, py::handle keyword, const 
     const std::size_t index =
         of_body ? CheckedIndex(key_value, batch.body_count(), "body")
                 : CheckedIndex(key_value, batch.constraint_count(), "constraint");
-    const std::string& what = out.names.emplace_back(std::string(name) + "[" +
-                                                     std::to_string(index) + "]");
+    // "body_forces[1]": only the checks below use it (in their messages).
+    const std::string what = std::string(name) + "[" + std::to_string(index) + "]";
     std::span<const float> per_world;
     if (one_per_world) {
       per_world =
