@@ -121,7 +121,10 @@ Batch::Impl::Impl(const Scene& scene, std::size_t world_count, BatchOptions opti
       threads_(ThreadsOf(options)),
       arena_(threads_),
       blocks_per_task_(options.blocks_per_task),
-      profile_phases_(options.profile_phases) {
+      profile_phases_(options.profile_phases),
+      prefetch_next_block_(storage_.size() * sizeof(LaneArray) /
+                               static_cast<std::size_t>(threads_) >
+                           kPrefetchAboveBytesPerThread) {
   // Both tables are built for the same Highway targets; a missing one would
   // be a build error, not a user's.
   if (joint_kernels_ == nullptr) {
@@ -166,7 +169,8 @@ void Batch::Impl::Step(const StepSettings& settings, std::stop_token stop, const
         if (io != nullptr) FinishBlock(block, *io, false);
         continue;
       }
-      const bool unhealthy = StepBlock(block, params);
+      const bool prefetch = prefetch_next_block_ && block + 1 != range.end();
+      const bool unhealthy = StepBlock(block, prefetch ? Block(block + 1) : nullptr, params);
       RecordHealth(block, unhealthy, reset_unhealthy);
       if (io != nullptr) FinishBlock(block, *io, true);
     }
@@ -181,10 +185,12 @@ void Batch::Impl::Step(const StepSettings& settings, std::stop_token stop, const
   });
 }
 
-bool Batch::Impl::StepBlock(std::size_t block, const StepParams& params) {
-  if (!profile_phases_) return kernels_->step_block(plan_, Block(block), params);
+bool Batch::Impl::StepBlock(std::size_t block, const std::byte* next_block,
+                            const StepParams& params) {
+  if (!profile_phases_) return kernels_->step_block(plan_, Block(block), next_block, params);
   std::uint64_t phase_ns[kStepPhaseCount] = {};
-  const bool unhealthy = kernels_->step_block_profiled(plan_, Block(block), params, phase_ns);
+  const bool unhealthy =
+      kernels_->step_block_profiled(plan_, Block(block), next_block, params, phase_ns);
   for (std::size_t p = 0; p < kStepPhaseCount; ++p) {
     phase_ns_[p].fetch_add(phase_ns[p], std::memory_order_relaxed);
   }

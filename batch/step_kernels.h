@@ -27,11 +27,14 @@ struct StepParams {
 struct StepKernels {
   TargetInfo target;
   // Steps the block and checks the health of its worlds (WorldHealthLanes);
-  // true if any lane of the block is unhealthy.
-  bool (*step_block)(const StepPlan& plan, std::byte* block, const StepParams& params);
+  // true if any lane of the block is unhealthy. next_block (or nullptr) is
+  // the block the same thread steps next: brought into L2 meanwhile.
+  bool (*step_block)(const StepPlan& plan, std::byte* block, const std::byte* next_block,
+                     const StepParams& params);
   // The same step, bit for bit, adding the nanoseconds spent in each phase
   // to phase_ns[StepPhase] (kStepPhaseCount sums).
-  bool (*step_block_profiled)(const StepPlan& plan, std::byte* block, const StepParams& params,
+  bool (*step_block_profiled)(const StepPlan& plan, std::byte* block,
+                              const std::byte* next_block, const StepParams& params,
                               std::uint64_t* phase_ns);
 };
 
