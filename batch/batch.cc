@@ -375,13 +375,13 @@ void Batch::Impl::ResetWorld(std::size_t world) {
   ResetLanes(world / kLaneWidth, &lane, 1);
 }
 
-// Array by array, each lane in turn: every cache line of the block (one
-// LaneArray each) is touched once however many of its worlds reset.
+// Every array of the block takes the initial block's lanes of the resetting
+// worlds, a vector select per array on the step's target (a float at a time
+// before: the same time for one reset world per block, more for several).
 void Batch::Impl::ResetLanes(std::size_t block, const std::size_t* lanes, std::size_t count) {
-  LaneArray* arrays = storage_.data() + block * arrays_per_block_;
-  for (std::size_t i = 0; i < arrays_per_block_; ++i) {
-    for (std::size_t k = 0; k < count; ++k) arrays[i][lanes[k]] = initial_[i][lanes[k]];
-  }
+  LaneArray take{};
+  for (std::size_t k = 0; k < count; ++k) take[lanes[k]] = 1.0f;
+  kernels_->reset_lanes(Block(block), Bytes(initial_.data()), arrays_per_block_, take);
 }
 
 // Over the batch's threads, block by block (a world's lanes, health and

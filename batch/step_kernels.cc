@@ -276,8 +276,21 @@ bool StepBlockProfiled(const StepPlan& plan, std::byte* block, const std::byte* 
   return StepBlockWith(plan, block, next_block, params, clock);
 }
 
+void ResetLanesOfBlock(std::byte* block, const std::byte* initial, std::size_t arrays,
+                       const LaneArray& take) {
+  LaneArray* out = reinterpret_cast<LaneArray*>(block);
+  const LaneArray* from = reinterpret_cast<const LaneArray*>(initial);
+  ForEachChunk([&](std::size_t offset) {
+    const LaneMask reset = hn::Ne(Load(take, offset), Zero());
+    for (std::size_t i = 0; i < arrays; ++i) {
+      Store(hn::IfThenElse(reset, Load(from[i], offset), Load(out[i], offset)), out[i], offset);
+    }
+  });
+}
+
 const StepKernels* GetStepKernels() {
-  static const StepKernels kTable = {MANYWORLDS_THIS_TARGET, &StepBlock, &StepBlockProfiled};
+  static const StepKernels kTable = {MANYWORLDS_THIS_TARGET, &StepBlock, &StepBlockProfiled,
+                                     &ResetLanesOfBlock};
   return &kTable;
 }
 
