@@ -14,6 +14,7 @@
 #include "manyworlds/batch.h"
 #include "manyworlds/mass_range.h"
 #include "manyworlds/scenes.h"
+#include "tests/step_targets.h"
 
 namespace manyworlds {
 namespace {
@@ -108,6 +109,46 @@ TEST(SnapshotTest, MaskedRestoreChangesOnlyTheChosenWorlds) {
     EXPECT_EQ(0, std::memcmp(&mixed[w * per_world], &want[w * per_world],
                              per_world * sizeof(float)))
         << "world " << w;
+  }
+}
+
+// Reset writes the initial block's lanes of the chosen worlds into every
+// array of their blocks with the step's target's vector select: on every
+// target, every byte of a reset world's lanes (impulses, caches and targets
+// included) must be a fresh batch's, and every byte of the other worlds
+// must be unchanged. Snapshot bytes: a 40-byte header (block_bytes at 16),
+// the blocks, then health and pending input per world.
+TEST(SnapshotTest, ResetGivesEveryByteOfAFreshWorldOnEveryTarget) {
+  const Scene scene = MakeScene("ragdoll");
+  constexpr std::size_t kHeader = 40;
+  std::vector<std::uint8_t> mask(kWorlds, 0);
+  mask[0] = mask[1] = mask[5] = mask[15] = mask[16] = mask[36] = 1;  // several per block
+  for (const std::int64_t target : SupportedStepTargets()) {
+    SCOPED_TRACE(hwy::TargetName(target));
+    BatchOptions options;
+    options.target = target;
+    const Batch fresh(scene, kWorlds, options);
+    Batch batch(scene, kWorlds, options);
+    RunScene(batch, "ragdoll", 0, 20);
+    const BatchSnapshot before = batch.Snapshot();
+    batch.Reset(mask);
+    const BatchSnapshot after = batch.Snapshot();
+    const BatchSnapshot initial = fresh.Snapshot();
+    std::uint64_t block_bytes = 0;
+    std::memcpy(&block_bytes, after.bytes().data() + 16, sizeof(block_bytes));
+    ASSERT_GT(block_bytes, 0u);
+    for (std::size_t w = 0; w < kWorlds; ++w) {
+      const BatchSnapshot& want = mask[w] ? initial : before;
+      const std::size_t block = w / 16, lane = w % 16;
+      std::size_t differing = 0;
+      for (std::size_t array = 0; array < block_bytes / 64; ++array) {
+        const std::size_t at = kHeader + block * block_bytes + array * 64 + lane * 4;
+        differing += std::memcmp(after.bytes().data() + at, want.bytes().data() + at, 4) != 0;
+      }
+      EXPECT_EQ(differing, 0u) << "world " << w << (mask[w] ? " (reset)" : " (kept)");
+      const std::size_t health = kHeader + ((kWorlds + 15) / 16) * block_bytes + w;
+      EXPECT_EQ(after.bytes()[health], want.bytes()[health]) << "health of world " << w;
+    }
   }
 }
 
