@@ -31,6 +31,14 @@ double RestRotationError(const Pose& b1, const Pose& b2, const Rotation& inv_ini
   return RotationAngle(b2.q * inv_initial * b1.q.conjugate());
 }
 
+// A helper hinge's unwrapped angle (gear, rack-and-pinion) in this lane.
+double UnwrappedAngleOf(const StepPlan& plan, const LaneReader& read, const ConstraintPlan& hinge) {
+  const auto& s = read.at<HingeConstraintLanes>(hinge.offset);
+  return UnwrappedHingeAngle(
+      HingeAngle(BodyPose(plan, read, hinge.body1), BodyPose(plan, read, hinge.body2), read, s),
+      read, s);
+}
+
 double LimitViolation(double value, double min, double max) {
   return std::max({0.0, min - value, value - max});
 }
@@ -127,27 +135,23 @@ ConstraintErrorSplit ConstraintErrorSplitOfLane(const StepPlan& plan, const std:
       const auto& s = read.at<GearConstraintLanes>(c.offset);
       const ConstraintPlan& h1 = plan.constraints[c.helper1];
       const ConstraintPlan& h2 = plan.constraints[c.helper2];
-      const double theta1 = (h1.body2 == c.body1 ? 1.0 : -1.0) *
-                            HingeAngle(BodyPose(plan, read, h1.body1), BodyPose(plan, read, h1.body2),
-                                       read, read.at<HingeConstraintLanes>(h1.offset));
-      const double theta2 = (h2.body2 == c.body2 ? 1.0 : -1.0) *
-                            HingeAngle(BodyPose(plan, read, h2.body1), BodyPose(plan, read, h2.body2),
-                                       read, read.at<HingeConstraintLanes>(h2.offset));
-      return {0.0, std::abs(Fold(theta1 + read(s.geometry.ratio) * theta2))};
+      // The coupling error of the gears' unwrapped angles, as the position
+      // step measures it (docs/constraint-parts.md, "Unwrapped angles").
+      const double theta1 = (h1.body2 == c.body1 ? 1.0 : -1.0) * UnwrappedAngleOf(plan, read, h1);
+      const double theta2 = (h2.body2 == c.body2 ? 1.0 : -1.0) * UnwrappedAngleOf(plan, read, h2);
+      return {0.0, std::abs(theta1 + read(s.geometry.ratio) * theta2)};
     }
     case ConstraintType::kRackAndPinion: {
       if (c.helper1 == kNoConstraint) return {};
       const auto& s = read.at<RackAndPinionConstraintLanes>(c.offset);
       const ConstraintPlan& h = plan.constraints[c.helper1];
       const ConstraintPlan& sl = plan.constraints[c.helper2];
-      const double theta = (h.body2 == c.body1 ? 1.0 : -1.0) *
-                           HingeAngle(BodyPose(plan, read, h.body1), BodyPose(plan, read, h.body2),
-                                      read, read.at<HingeConstraintLanes>(h.offset));
+      const double theta = (h.body2 == c.body1 ? 1.0 : -1.0) * UnwrappedAngleOf(plan, read, h);
       const double d = (sl.body2 == c.body2 ? 1.0 : -1.0) *
                        SliderPosition(BodyPose(plan, read, sl.body1), BodyPose(plan, read, sl.body2),
                                       read, read.at<SliderConstraintLanes>(sl.offset));
       // theta - r d: the ratio (rad/m) turns the rack's metres into radians.
-      return {0.0, std::abs(Fold(theta - read(s.geometry.ratio) * d))};
+      return {0.0, std::abs(theta - read(s.geometry.ratio) * d)};
     }
     case ConstraintType::kDistance: {
       const auto& s = read.at<DistanceConstraintLanes>(c.offset);

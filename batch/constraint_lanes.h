@@ -47,10 +47,11 @@ struct HingeConstraintLanes {
   HingeRotationLanes rotation;
   LaneArray angle;  // theta at setup (rad, (-pi, pi])
   // Turn counting for the unwrapped angle theta + 2 pi turns (joint
-  // coordinates): theta at the last setup, and the whole turns made since the
-  // scene's pose (a float holds them exactly up to 2^24 turns). A wrap from
-  // near +pi to near -pi between two setups is a turn up; a hinge that turns
-  // more than pi within one substep is miscounted.
+  // coordinates; the gear and rack-and-pinion position steps): theta at the
+  // last setup, and the whole turns made since the scene's pose (a float
+  // holds them exactly up to 2^24 turns). A wrap from near +pi to near -pi
+  // between two setups is a turn up; a hinge that turns more than pi within
+  // one substep is miscounted.
   LaneArray turn_reference_angle;
   LaneArray turns;
 };

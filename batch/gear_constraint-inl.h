@@ -3,14 +3,19 @@
 // the hinges (and the rack's slider) when the scene names them.
 //
 // Gear:  a = q1 hinge1_local, b = q2 hinge2_local; C = theta1 + r theta2 with
-//        the two hinges' current angles (negated when the gear's body is the
-//        hinge's body 1, so theta is always the gear's own rotation, as in
-//        Jolt), folded as Jolt does:
-//        C = CenterAngleAroundZero(fmod(theta1 + r theta2, 2 pi)).
+//        the two hinges' current unwrapped angles (negated when the gear's
+//        body is the hinge's body 1, so theta is always the gear's own
+//        rotation, as in Jolt).
 // Rack:  a = q1 hinge_local (pinion), b = q2 slider_local (rack);
-//        C = CenterAngleAroundZero(fmod(theta - r d, 2 pi)) with the hinge's
-//        angle and the slider's position (each negated when the pinion / rack
-//        is the helper's body 1).
+//        C = theta - r d with the hinge's unwrapped angle and the slider's
+//        position (each negated when the pinion / rack is the helper's body 1).
+// Where we differ from Jolt (docs/constraint-parts.md, "Unwrapped angles"):
+// Jolt measures the hinges' angles wrapped into (-pi, pi] and folds C with
+// CenterAngleAroundZero(fmod(C, 2 pi)). With a non-integer ratio the gear's
+// C then jumps by 2 pi r once gear 2 turns past +-pi, which the fold does not
+// undo, and the position step drives the gears to a wrong coupling; the
+// unwrapped angles (turns counted at every hinge setup, HingeCountTurns)
+// make C the true coupling error, so there is nothing to fold.
 // Setup computes the world axes and the part; the position step recomputes the
 // part at the current rotations and takes one Baumgarte step on C.
 
@@ -30,12 +35,6 @@
 HWY_BEFORE_NAMESPACE();
 namespace manyworlds {
 namespace HWY_NAMESPACE {
-
-// Jolt's CenterAngleAroundZero(fmod(x, 2 pi)).
-HWY_INLINE LaneVec FoldedAngle(LaneVec x) {
-  const LaneVec turns = hn::Trunc(hn::Mul(x, Splat(0.159154943091895336f)));
-  return CenterAngleAroundZero(SubtractTurns(x, turns));
-}
 
 // A helper's reading of `body`'s motion: as measured when `body` is the
 // helper's body 2, negated when it is body 1 (scene-uniform).
@@ -81,13 +80,12 @@ inline bool GearConstraintSolvePosition(const StepPlan& plan, const ConstraintBl
   const ConstraintBlock hinge2 = ConstraintInBlock(plan, c.plan.helper2, c.block);
   ForEachChunk([&](std::size_t offset) {
     const LaneVec theta1 = AsSeenBy(hinge1, c.plan.body1,
-                                    HingeCurrentAngleOfChunk(
+                                    HingeUnwrappedAngleOfChunk(
                                         hinge1.bodies, hinge1.Main<HingeConstraintLanes>(), offset));
     const LaneVec theta2 = AsSeenBy(hinge2, c.plan.body2,
-                                    HingeCurrentAngleOfChunk(
+                                    HingeUnwrappedAngleOfChunk(
                                         hinge2.bodies, hinge2.Main<HingeConstraintLanes>(), offset));
-    Store(FoldedAngle(hn::MulAdd(Load(s.geometry.ratio, offset), theta2, theta1)), s.error,
-          offset);
+    Store(hn::MulAdd(Load(s.geometry.ratio, offset), theta2, theta1), s.error, offset);
   });
   CouplingAxes(c.bodies, s.hinge_axis1_local, s.hinge_axis2_local, s.geometry.hinge_axis1,
                s.geometry.hinge_axis2);
@@ -125,12 +123,11 @@ inline bool RackAndPinionConstraintSolvePosition(const StepPlan& plan,
   ForEachChunk([&](std::size_t offset) {
     const LaneVec theta = AsSeenBy(
         hinge, c.plan.body1,
-        HingeCurrentAngleOfChunk(hinge.bodies, hinge.Main<HingeConstraintLanes>(), offset));
+        HingeUnwrappedAngleOfChunk(hinge.bodies, hinge.Main<HingeConstraintLanes>(), offset));
     const LaneVec d = AsSeenBy(slider, c.plan.body2,
                                SliderCurrentPositionOfChunk(
                                    slider.bodies, slider.Main<SliderConstraintLanes>(), offset));
-    Store(FoldedAngle(hn::NegMulAdd(Load(s.geometry.ratio, offset), d, theta)), s.error,
-          offset);
+    Store(hn::NegMulAdd(Load(s.geometry.ratio, offset), d, theta), s.error, offset);
   });
   CouplingAxes(c.bodies, s.hinge_axis1_local, s.slider_axis2_local, s.geometry.hinge_axis,
                s.geometry.slider_axis);

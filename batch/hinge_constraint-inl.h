@@ -61,6 +61,15 @@ HWY_INLINE LaneVec HingeCurrentAngleOfChunk(const BodyPair& bodies,
   return HingeAngleOfChunk(bodies, s, HingeAxis1OfChunk(bodies, s, offset), offset);
 }
 
+// The hinge's unwrapped angle now (theta + 2 pi turns, UnwrappedAngle), for
+// the gear and rack-and-pinion position steps: continuous across +-pi.
+HWY_INLINE LaneVec HingeUnwrappedAngleOfChunk(const BodyPair& bodies,
+                                              const HingeConstraintLanes& s,
+                                              std::size_t offset) {
+  return UnwrappedAngle(HingeCurrentAngleOfChunk(bodies, s, offset),
+                        Load(s.turn_reference_angle, offset), Load(s.turns, offset));
+}
+
 // Writes a1, a2 (and theta) of the current rotations into the hinge's lanes.
 HWY_INLINE void HingeAxesAndAngle(const ConstraintBlock& c, bool with_angle) {
   auto& s = c.Main<HingeConstraintLanes>();

@@ -92,14 +92,6 @@ Separation AnchorSeparation(const Chunk& k, const BodyChunk& b1, const BodyChunk
 
 LaneVec Length(const Vec3& v) { return hn::Sqrt(LengthSquared(v)); }
 
-// (-pi, pi] angles a and b: a - b folded once into [-pi, pi].
-LaneVec FoldedDifference(LaneVec a, LaneVec b) {
-  const LaneVec two_pi = Splat(6.2831853071795865f);
-  const LaneVec d = hn::Sub(a, b);
-  const LaneVec up = hn::IfThenElse(hn::Gt(d, Splat(kPiHigh)), hn::Sub(d, two_pi), d);
-  return hn::IfThenElse(hn::Lt(up, Splat(-kPiHigh)), hn::Add(up, two_pi), up);
-}
-
 // Jolt's swing-twist angles of body 2's constraint frame in body 1's, and
 // the relative angular velocity in body 1's frame: six values.
 void RotationCoordinates(const Quat& frame1, const Quat& frame2, const BodyChunk& b1,
@@ -138,10 +130,8 @@ std::size_t CoordinatesOfChunk(const Chunk& k, LaneVec* values) {
       const LaneVec theta =
           hn::IfThenElse(hn::Eq(diff.w, Zero()), Splat(kPiHigh),
                          hn::Mul(Splat(2.0f), Atan(hn::Div(along, diff.w))));
-      const LaneVec reference = k(s.turn_reference_angle);
       values[0] = theta;
-      values[1] = hn::Add(hn::MulAdd(Splat(6.2831853071795865f), k(s.turns), reference),
-                          FoldedDifference(theta, reference));
+      values[1] = UnwrappedAngle(theta, k(s.turn_reference_angle), k(s.turns));
       values[2] = Dot(Sub(b2.w, b1.w), a1);
       return 3;
     }

@@ -92,13 +92,8 @@ void CoordinatesOf(const ConstraintPlan& c, const LaneReader& read, const Pose& 
       const auto& s = read.at<HingeConstraintLanes>(c.offset);
       Vector a1;
       const double theta = HingeAngle(b1, b2, read, s, &a1);
-      const double reference = read(s.turn_reference_angle);
       values[0] = theta;
-      // theta and the reference both lie in (-pi, pi]: one fold suffices.
-      double since_setup = theta - reference;
-      if (since_setup > M_PI) since_setup -= kTwoPi;
-      if (since_setup < -M_PI) since_setup += kTwoPi;
-      values[1] = reference + kTwoPi * read(s.turns) + since_setup;
+      values[1] = UnwrappedHingeAngle(theta, read, s);
       values[2] = (m2.w - m1.w).dot(a1);
       break;
     }

@@ -82,6 +82,18 @@ inline double HingeAngle(const Pose& b1, const Pose& b2, const LaneReader& read,
   return 2.0 * std::atan(diff.vec().dot(a1) / diff.w());
 }
 
+// The hinge's unwrapped angle for its current angle theta: continued from the
+// angle and whole turns counted at its last setup (the step's
+// UnwrappedAngle in double; both angles lie in (-pi, pi], so one fold).
+inline double UnwrappedHingeAngle(double theta, const LaneReader& read,
+                                  const HingeConstraintLanes& s) {
+  const double reference = read(s.turn_reference_angle);
+  double since_setup = theta - reference;
+  if (since_setup > M_PI) since_setup -= kTwoPi;
+  if (since_setup < -M_PI) since_setup += kTwoPi;
+  return reference + kTwoPi * read(s.turns) + since_setup;
+}
+
 // The slider's d = u . s, with u the anchor separation and s body 1's slider axis.
 inline double SliderPosition(const Pose& b1, const Pose& b2, const LaneReader& read,
                              const SliderConstraintLanes& s, Vector* separation = nullptr,

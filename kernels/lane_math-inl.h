@@ -570,6 +570,24 @@ HWY_INLINE LaneVec CenterAngleAroundZero(LaneVec x) {
   // x bit for bit there, and this select keeps +-pi as they are.)
   return hn::IfThenElse(hn::Eq(hn::Abs(r), pi), hn::CopySign(pi, x), r);
 }
+
+// (-pi, pi] angles a and b: a - b folded once into [-pi, pi].
+HWY_INLINE LaneVec FoldedDifference(LaneVec a, LaneVec b) {
+  const LaneVec two_pi = Splat(6.2831853071795865f);
+  const LaneVec d = hn::Sub(a, b);
+  const LaneVec up = hn::IfThenElse(hn::Gt(d, Splat(kPiHigh)), hn::Sub(d, two_pi), d);
+  return hn::IfThenElse(hn::Lt(up, Splat(-kPiHigh)), hn::Add(up, two_pi), up);
+}
+
+// A hinge's unwrapped angle: its angle now, theta in (-pi, pi], continued
+// from the angle and the whole turns counted at its last setup (reference
+// in (-pi, pi], turns): reference + 2 pi turns + (theta - reference) folded
+// once, so a hinge that turned less than pi since the setup reads on
+// continuously across +-pi.
+HWY_INLINE LaneVec UnwrappedAngle(LaneVec theta, LaneVec reference, LaneVec turns) {
+  return hn::Add(hn::MulAdd(Splat(6.2831853071795865f), turns, reference),
+                 FoldedDifference(theta, reference));
+}
 // ------------------------------------------ angles: atan, atan2, wrap (end)
 
 // ------------- 3x3 storage, quaternion from matrix (begin)

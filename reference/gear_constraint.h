@@ -9,21 +9,21 @@
 // Velocity: warm start, one GearPart iteration per velocity iteration.
 // Position: only when both hinge constraints are given (the only way to measure
 //           θ1, θ2). θ_i is the rotation of gear i as its hinge measures it: the
-//           hinge's current angle if the gear is the hinge's body 2, minus it if
-//           the gear is the hinge's body 1 (the hinge angle is body 2 relative
-//           to body 1). Then
+//           hinge's current unwrapped angle (turns counted at every setup) if the
+//           gear is the hinge's body 2, minus it if the gear is the hinge's body 1
+//           (the hinge angle is body 2 relative to body 1). Then
 //
-//             C = CenterAngleAroundZero(fmod(θ1 + r·θ2, 2π))
+//             C = θ1 + r·θ2,
 //
-//           (each θ_i is wrapped into (−π, π], so fmod 2π only undoes the wrap
-//           of θ2 for integer r), properties recomputed from the current
-//           rotations, one Baumgarte step. The world computes θ1, θ2 (it owns the
-//           hinges) and passes them in.
+//           properties recomputed from the current rotations, one Baumgarte step.
+//           The world computes θ1, θ2 (it owns the hinges) and passes them in.
+//           Jolt folds C = CenterAngleAroundZero(fmod(θ1 + r·θ2, 2π)) of wrapped
+//           angles, which with a non-integer r jumps by 2π·r once gear 2 turns
+//           past ±π (docs/constraint-parts.md, "Unwrapped angles").
 #pragma once
 
 #include <cmath>
 #include <cstddef>
-#include <numbers>
 
 #include "manyworlds/scene.h"
 #include "reference/body.h"
@@ -78,11 +78,9 @@ class GearConstraint {
     return gear_.SolvePositionConstraint(body1, body2, error, baumgarte);
   }
 
-  // C = CenterAngleAroundZero(fmod(θ1 + r·θ2, 2π)).
-  T PositionError(T rotation1, T rotation2) const {
-    constexpr T kTwoPi = T(2) * std::numbers::pi_v<T>;
-    return CenterAngleAroundZero(std::fmod(rotation1 + ratio_ * rotation2, kTwoPi));
-  }
+  // C = θ1 + r·θ2 of the unwrapped angles (Jolt folds wrapped ones:
+  // docs/constraint-parts.md, "Unwrapped angles").
+  T PositionError(T rotation1, T rotation2) const { return rotation1 + ratio_ * rotation2; }
 
   const GearPart<T>& gear_part() const { return gear_; }
 

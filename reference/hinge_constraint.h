@@ -44,6 +44,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <numbers>
 
 #include "manyworlds/scene.h"
 #include "manyworlds/spring_settings.h"
@@ -117,7 +118,19 @@ class HingeConstraint {
     return HingeCurrentAngle(body1, body2, inv_initial_orientation_, local_hinge_axis1_);
   }
 
+  // The unwrapped angle now: the current angle continued from the angle and
+  // whole turns counted at the last setup (the gear and rack-and-pinion
+  // position steps read it; docs/constraint-parts.md, "Unwrapped angles").
+  T UnwrappedAngle(const Body<T>& body1, const Body<T>& body2) const {
+    constexpr T kTwoPi = T(2) * std::numbers::pi_v<T>;
+    T since_setup = CurrentAngle(body1, body2) - turn_reference_angle_;
+    if (since_setup > std::numbers::pi_v<T>) since_setup -= kTwoPi;
+    if (since_setup < -std::numbers::pi_v<T>) since_setup += kTwoPi;
+    return turn_reference_angle_ + kTwoPi * turns_ + since_setup;
+  }
+
   void SetupVelocityConstraint(const Body<T>& body1, const Body<T>& body2, T dt) {
+    CountTurns(CurrentAngle(body1, body2));
     point_.CalculateConstraintProperties(body1, local_point1_, body2, local_point2_);
     rotation_.CalculateConstraintProperties(body1, body1.rotation * local_hinge_axis1_, body2,
                                             body2.rotation * local_hinge_axis2_);
@@ -188,6 +201,15 @@ class HingeConstraint {
     T min;
     T max;
   };
+
+  // A jump of more than pi since the last setup is a wrap through +-pi (the
+  // hinge turned less than pi the other way): one turn up or down.
+  void CountTurns(T theta) {
+    const T jump = theta - turn_reference_angle_;
+    if (jump < -std::numbers::pi_v<T>) turns_ += T(1);
+    if (jump > std::numbers::pi_v<T>) turns_ -= T(1);
+    turn_reference_angle_ = theta;
+  }
 
   bool UsesAngle() const {
     return has_limits_ || motor_state_ != MotorState::kOff || max_friction_torque_ > T(0);
@@ -283,6 +305,11 @@ class HingeConstraint {
   // Per step (setup), refreshed in the position phase for hard limits.
   Vec3<T> a1_ = Vec3<T>::Zero();  // world hinge axis of body 1
   T theta_ = T(0);
+  // Turn counting: the angle at the last setup and the whole turns since
+  // the scene's pose (a hinge turning more than pi in one substep is
+  // miscounted).
+  T turn_reference_angle_ = T(0);
+  T turns_ = T(0);
 
   AnglePart<T> motor_;
   PointPart<T> point_;

@@ -8,19 +8,21 @@
 // Setup:    a = R1·h, b = R2·s, part properties.
 // Velocity: warm start, one part iteration per velocity iteration.
 // Position: only when the pinion's hinge and the rack's slider are both given.
-//           θ = the hinge's current angle if the pinion is the hinge's body 2, else
-//           minus it; d = the slider's current position if the rack is the
-//           slider's body 2, else minus it. Then
+//           θ = the hinge's current unwrapped angle if the pinion is the hinge's
+//           body 2, else minus it; d = the slider's current position if the rack
+//           is the slider's body 2, else minus it. Then
 //
-//             C = CenterAngleAroundZero(fmod(θ − r·d, 2π)),
+//             C = θ − r·d
 //
-//           properties recomputed from the current rotations, one Baumgarte step.
+//           (Jolt folds CenterAngleAroundZero(fmod(θ − r·d, 2π)) of the wrapped
+//           angle: the same unless the rack slipped by whole turns, which the
+//           fold would hide), properties recomputed from the current rotations,
+//           one Baumgarte step.
 //           The world measures θ and d (it owns the helpers) and passes them in.
 #pragma once
 
 #include <cmath>
 #include <cstddef>
-#include <numbers>
 
 #include "manyworlds/scene.h"
 #include "reference/body.h"
@@ -75,11 +77,8 @@ class RackAndPinionConstraint {
     return part_.SolvePositionConstraint(body1, body2, error, baumgarte);
   }
 
-  // C = CenterAngleAroundZero(fmod(θ − r·d, 2π)).
-  T PositionError(T rotation, T translation) const {
-    constexpr T kTwoPi = T(2) * std::numbers::pi_v<T>;
-    return CenterAngleAroundZero(std::fmod(rotation - ratio_ * translation, kTwoPi));
-  }
+  // C = θ − r·d of the unwrapped angle.
+  T PositionError(T rotation, T translation) const { return rotation - ratio_ * translation; }
 
   const RackAndPinionPart<T>& rack_and_pinion_part() const { return part_; }
 

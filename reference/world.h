@@ -184,6 +184,13 @@ class World {
     if (hinge == nullptr) throw std::invalid_argument(NotA("hinge", constraint));
     return hinge->CurrentAngle(bodies_[hinge->body1()], bodies_[hinge->body2()]);
   }
+  // The same angle unwrapped: continuous across +-pi, whole turns counted at
+  // every setup (what the gear and rack-and-pinion position steps read).
+  T HingeUnwrappedAngle(std::size_t constraint) const {
+    const auto* hinge = std::get_if<HingeConstraint<T>>(&constraints_.at(constraint));
+    if (hinge == nullptr) throw std::invalid_argument(NotA("hinge", constraint));
+    return hinge->UnwrappedAngle(bodies_[hinge->body1()], bodies_[hinge->body2()]);
+  }
   T SliderPosition(std::size_t constraint) const {
     const auto* slider = std::get_if<SliderConstraint<T>>(&constraints_.at(constraint));
     if (slider == nullptr) throw std::invalid_argument(NotA("slider", constraint));
@@ -269,7 +276,7 @@ class World {
   // The rotation of `body` as hinge `hinge` measures it: the hinge angle is body 2
   // relative to body 1, so a body that is the hinge's body 1 turned the other way.
   T RotationMeasuredByHinge(std::size_t hinge, std::size_t body) const {
-    const T angle = HingeAngle(hinge);
+    const T angle = HingeUnwrappedAngle(hinge);
     return std::get<HingeConstraint<T>>(constraints_[hinge]).body2() == body ? angle : -angle;
   }
   // Likewise the translation of `body` as slider `slider` measures it.

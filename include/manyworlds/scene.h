@@ -360,7 +360,11 @@ struct PathConstraintSettings {
 inline constexpr std::size_t kNoConstraint = static_cast<std::size_t>(-1);
 
 // Couples the rotations of two hinged bodies: theta1 + ratio theta2 = 0
-// (ratio = teeth2 / teeth1). Position correction needs both hinges.
+// (ratio = teeth2 / teeth1). Position correction needs both hinges; it reads
+// their unwrapped angles (whole turns counted at every step), so any ratio
+// stays coupled over any number of turns, as long as no hinge turns more than
+// pi in one substep (Jolt's wrapped angles slip with a non-integer ratio:
+// docs/constraint-parts.md, "Unwrapped angles").
 struct GearConstraintSettings {
   std::string name;
   std::size_t body1 = 0, body2 = 0;
@@ -373,7 +377,8 @@ struct GearConstraintSettings {
 };
 
 // Couples a pinion's rotation (body 1) to a rack's translation (body 2):
-// theta - ratio d = 0, ratio in rad/m. Position correction needs both helpers.
+// theta - ratio d = 0, ratio in rad/m. Position correction needs both helpers
+// (theta: the hinge's unwrapped angle, as for the gear).
 struct RackAndPinionConstraintSettings {
   std::string name;
   std::size_t body1 = 0, body2 = 0;
