@@ -40,7 +40,7 @@ struct StepKernels {
   // `initial` where take[lane] != 0 and keeps its own elsewhere (a select
   // and a whole store: moves only, every bit kept; one vector per array on
   // AVX-512 however many of the block's worlds reset. AVX-512's masked store
-  // was no faster on Zen 5).
+  // was no faster on the Intel Xeon it was measured on).
   void (*reset_lanes)(std::byte* block, const std::byte* initial, std::size_t arrays,
                       const LaneArray& take);
 };
