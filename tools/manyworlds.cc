@@ -127,8 +127,10 @@ std::string MassRangeLimitOf(const Options& options, Scene& scene) {
 int Scenes() {
   for (const std::string& id : AllSceneIds()) {
     const Scene scene = MakeScene(id);
-    std::printf("%-19s %3zu bodies %3zu constraints  %s\n", id.c_str(), scene.bodies().size(),
-                scene.constraints().size(), SceneDescription(id).c_str());
+    const std::size_t constraints = scene.constraints().size();
+    std::printf("%-19s %3zu bodies %3zu %-11s  %s\n", id.c_str(), scene.bodies().size(),
+                constraints, constraints == 1 ? "constraint" : "constraints",
+                SceneDescription(id).c_str());
   }
   return 0;
 }

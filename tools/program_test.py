@@ -117,16 +117,21 @@ def case_scenes():
     result = run(["scenes"])
     if result.returncode != 0 or result.stderr:
         fail(f"exit code {result.returncode}, stderr {result.stderr!r}")
-    line_form = re.compile(r"^(\S+) +(\d+) bodies +(\d+) constraints  (\S.{5,})$")
+    line_form = re.compile(r"^(\S+) +(\d+) bodies +(\d+) constraints? {2,}(\S.{5,})$")
     lines = result.stdout.splitlines()
     for line in lines:
-        if not line_form.match(line):
+        found = line_form.match(line)
+        if not found:
             fail(f"line not 'id N bodies N constraints description': {line!r}")
+        if (found.group(3) == "1") != (" 1 constraint " in line):
+            fail(f"'constraint' and its count disagree: {line!r}")
     by_id = {line.split()[0]: line for line in lines}
     if len(by_id) != len(lines):
         fail("an id is listed twice")
     if not re.match(r"^cartpole +3 bodies +2 constraints  ", by_id.get("cartpole", "")):
         fail(f"cartpole's counts are wrong: {by_id.get('cartpole')!r}")
+    if not re.match(r"^flywheel +2 bodies +1 constraint  ", by_id.get("flywheel", "")):
+        fail(f"flywheel's counts are wrong: {by_id.get('flywheel')!r}")
 
 
 def report_steps(stdout):

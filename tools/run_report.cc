@@ -53,8 +53,9 @@ void PrintRunReport(const Batch& batch, const SceneActions& actions, const RunFa
     for (int bit = 0; bit < 4; ++bit) by_bit[bit] += (bits >> bit) & 1u;
   }
 
-  std::printf("scene:                %s (%zu bodies, %zu constraints)\n", facts.scene_id.c_str(),
-              batch.body_count(), batch.constraint_count());
+  std::printf("scene:                %s (%zu bodies, %zu %s)\n", facts.scene_id.c_str(),
+              batch.body_count(), batch.constraint_count(),
+              batch.constraint_count() == 1 ? "constraint" : "constraints");
   std::printf("worlds:               %zu\n", worlds);
   std::printf("threads:              %d\n", batch.threads());
   std::printf("SIMD target:          %s, %zu float lanes per vector\n", batch.SimdTarget(),
