@@ -142,7 +142,7 @@ class Batch::Impl {
   // `io`, each block's resets and outputs follow its step in the same task.
   void Step(const StepSettings& settings, std::stop_token stop, const BlockIo* io = nullptr);
   // One block's step, timed per phase when profiling; true if unhealthy.
-  // Steps the block; next_block (nullptr at a range's end) is prefetched.
+  // next_block (the thread's next, or nullptr) is brought into L2 meanwhile.
   bool StepBlock(std::size_t block, const std::byte* next_block, const StepParams& params);
   void RecordHealth(std::size_t block, bool unhealthy, bool reset_unhealthy);
   // Step's result: false when `stop` left some block unstepped.
