@@ -22,7 +22,6 @@
 //           past ±π (docs/constraint-parts.md, "Unwrapped angles").
 #pragma once
 
-#include <cmath>
 #include <cstddef>
 
 #include "manyworlds/scene.h"

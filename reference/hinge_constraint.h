@@ -130,11 +130,12 @@ class HingeConstraint {
   }
 
   void SetupVelocityConstraint(const Body<T>& body1, const Body<T>& body2, T dt) {
-    CountTurns(CurrentAngle(body1, body2));
+    const T theta = CurrentAngle(body1, body2);
+    CountTurns(theta);
     point_.CalculateConstraintProperties(body1, local_point1_, body2, local_point2_);
     rotation_.CalculateConstraintProperties(body1, body1.rotation * local_hinge_axis1_, body2,
                                             body2.rotation * local_hinge_axis2_);
-    CalculateAxisAndAngle(body1, body2);
+    CalculateAxisAndAngle(body1, theta);
     CalculateLimitProperties(body1, body2, dt);
     CalculateMotorProperties(body1, body2, dt);
   }
@@ -180,7 +181,7 @@ class HingeConstraint {
 
     bool limit = false;
     if (has_limits_ && hard_limits_) {
-      CalculateAxisAndAngle(body1, body2);
+      CalculateAxisAndAngle(body1, CurrentAngle(body1, body2));
       CalculateLimitProperties(body1, body2, dt);  // may deactivate (Λ = 0), spec 1.3
       if (limit_.IsActive()) {
         limit = limit_.SolvePositionConstraint(body1, body2, SmallestAngleToLimit(), baumgarte);
@@ -215,11 +216,12 @@ class HingeConstraint {
     return has_limits_ || motor_state_ != MotorState::kOff || max_friction_torque_ > T(0);
   }
 
-  // a1 and θ, only when limits, motor or friction need them (as Jolt).
-  void CalculateAxisAndAngle(const Body<T>& body1, const Body<T>& body2) {
+  // a1 and θ (the current angle), kept only when limits, motor or friction
+  // need them (as Jolt).
+  void CalculateAxisAndAngle(const Body<T>& body1, T theta) {
     if (!UsesAngle()) return;
     a1_ = body1.rotation * local_hinge_axis1_;
-    theta_ = CurrentAngle(body1, body2);
+    theta_ = theta;
   }
 
   T AngleToMin() const { return CenterAngleAroundZero(theta_ - limits_min_); }

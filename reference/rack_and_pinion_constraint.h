@@ -21,7 +21,6 @@
 //           The world measures θ and d (it owns the helpers) and passes them in.
 #pragma once
 
-#include <cmath>
 #include <cstddef>
 
 #include "manyworlds/scene.h"

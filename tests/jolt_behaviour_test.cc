@@ -1498,6 +1498,39 @@ struct Unwrapped {
   }
 };
 
+// Two spheres on hinges about Z to the static world (bodies 1 and 2, the
+// ground body 0), geared with `ratio`: constraint 0 is gear 1's hinge (gear 1
+// its body 2), constraint 1 gear 2's given the other way round (gear 2 its
+// body 1, so the gear must read minus that hinge's angle), constraint 2 the
+// gear. `motor1` is gear 1's hinge motor state.
+Scene TwoGears(double ratio, double radius2, Float3 position2,
+               MotorState motor1 = MotorState::kOff) {
+  Scene scene;
+  const std::size_t ground = scene.AddBody(FixedToWorld());
+  const std::size_t gear1 = scene.AddBody(Sphere(0.5, {-1, 0, 0}));
+  const std::size_t gear2 = scene.AddBody(Sphere(radius2, position2));
+  for (const auto& [body1, body2, gear] :
+       {std::array{ground, gear1, gear1}, std::array{gear2, ground, gear2}}) {
+    HingeConstraintSettings hinge;
+    hinge.body1 = body1;
+    hinge.body2 = body2;
+    hinge.point1 = hinge.point2 = scene.bodies()[gear].position;
+    hinge.hinge_axis1 = hinge.hinge_axis2 = {0, 0, 1};
+    hinge.normal_axis1 = hinge.normal_axis2 = {1, 0, 0};
+    if (gear == gear1) hinge.motor_state = motor1;
+    scene.AddConstraint(hinge);
+  }
+  GearConstraintSettings gear_settings;
+  gear_settings.body1 = gear1;
+  gear_settings.body2 = gear2;
+  gear_settings.hinge_axis1 = gear_settings.hinge_axis2 = {0, 0, 1};
+  gear_settings.ratio = float(ratio);
+  gear_settings.hinge1 = 0;
+  gear_settings.hinge2 = 1;
+  scene.AddConstraint(gear_settings);
+  return scene;
+}
+
 // Two spheres on hinges about Z to the static world, geared with r = 2. Gear 2's
 // hinge is given the other way round (gear 2 is its body 1), so the gear must
 // read minus that hinge's angle as gear 2's rotation. Gear 2 starts turned 0.05
@@ -1512,28 +1545,8 @@ struct Unwrapped {
 // stay at 0.1.
 TEST_P(JoltBehaviourTest, GearKeepsAnglesCoupled) {
   constexpr double kRatio = 2.0, kStartError = 0.05;
-  Scene scene;
-  const std::size_t ground = scene.AddBody(FixedToWorld());
-  const std::size_t gear1 = scene.AddBody(Sphere(0.5, {-1, 0, 0}));
-  const std::size_t gear2 = scene.AddBody(Sphere(0.5, {1.5f, 0, 0}));
-  for (const auto& [body1, body2, gear] :
-       {std::array{ground, gear1, gear1}, std::array{gear2, ground, gear2}}) {
-    HingeConstraintSettings hinge;
-    hinge.body1 = body1;
-    hinge.body2 = body2;
-    hinge.point1 = hinge.point2 = scene.bodies()[gear].position;
-    hinge.hinge_axis1 = hinge.hinge_axis2 = {0, 0, 1};
-    hinge.normal_axis1 = hinge.normal_axis2 = {1, 0, 0};
-    scene.AddConstraint(hinge);  // constraints 0 (gear 1) and 1 (gear 2, reversed)
-  }
-  GearConstraintSettings gear_settings;
-  gear_settings.body1 = gear1;
-  gear_settings.body2 = gear2;
-  gear_settings.hinge_axis1 = gear_settings.hinge_axis2 = {0, 0, 1};
-  gear_settings.ratio = float(kRatio);
-  gear_settings.hinge1 = 0;
-  gear_settings.hinge2 = 1;
-  scene.AddConstraint(gear_settings);
+  const std::size_t gear1 = 1, gear2 = 2;
+  const Scene scene = TwoGears(kRatio, 0.5, {1.5f, 0, 0});
 
   const std::unique_ptr<Stepper> world = Make(scene);
   world->SetRotation(gear2, Quatd(Eigen::AngleAxisd(kStartError, Vec3d::UnitZ())));
@@ -1559,36 +1572,15 @@ TEST_P(JoltBehaviourTest, GearKeepsAnglesCoupled) {
 // whole turns, so each time gear 2 passes +-pi, C jumps by 2 pi r, whose fold
 // leaves 2 pi (r - 1) = 1.88 rad, and the position step turns the gears to
 // that wrong coupling, one slip per wrap: with that formula the error here
-// grew to 31.7 rad (2026-11-26). The coupling is measured independently of the stepper's turn
-// counting: the wrapped angles of consecutive steps (0.1 rad apart) are
-// unwrapped by the test. Bound: 1e-4 rad, the bound of the r = 2 test above
+// grew to 31.7 rad (2026-11-26). The coupling is measured independently of
+// the stepper's turn counting: the wrapped angles of consecutive steps (0.1
+// rad apart) are unwrapped by the test. Bound: 1e-4 rad, the bound of the r = 2 test above
 // at the same default settings (measured worst 1.9e-5 in float, 4.6e-6 in
 // double; one wrap's slip is 1.88 rad).
 TEST_P(JoltBehaviourTest, GearWithNonIntegerRatioStaysCoupledThroughTwentyTurns) {
   constexpr double kRatio = 1.3, kTurnsPerSecond = 1.0;
-  Scene scene;
-  const std::size_t ground = scene.AddBody(FixedToWorld());
-  const std::size_t gear1 = scene.AddBody(Sphere(0.5, {-1, 0, 0}));
-  const std::size_t gear2 = scene.AddBody(Sphere(0.65, {1.15f, 0, 0}));
-  for (const auto& [body1, body2, gear] :
-       {std::array{ground, gear1, gear1}, std::array{gear2, ground, gear2}}) {
-    HingeConstraintSettings hinge;
-    hinge.body1 = body1;
-    hinge.body2 = body2;
-    hinge.point1 = hinge.point2 = scene.bodies()[gear].position;
-    hinge.hinge_axis1 = hinge.hinge_axis2 = {0, 0, 1};
-    hinge.normal_axis1 = hinge.normal_axis2 = {1, 0, 0};
-    if (gear == gear1) hinge.motor_state = MotorState::kVelocity;
-    scene.AddConstraint(hinge);  // constraints 0 (gear 1, driven) and 1 (gear 2, reversed)
-  }
-  GearConstraintSettings gear_settings;
-  gear_settings.body1 = gear1;
-  gear_settings.body2 = gear2;
-  gear_settings.hinge_axis1 = gear_settings.hinge_axis2 = {0, 0, 1};
-  gear_settings.ratio = float(kRatio);
-  gear_settings.hinge1 = 0;
-  gear_settings.hinge2 = 1;
-  scene.AddConstraint(gear_settings);
+  // Constraints 0 (gear 1, driven) and 1 (gear 2, reversed).
+  const Scene scene = TwoGears(kRatio, 0.65, {1.15f, 0, 0}, MotorState::kVelocity);
 
   const std::unique_ptr<Stepper> world = Make(scene);
   Unwrapped theta1, theta2;
