@@ -399,18 +399,21 @@ BodyForce SceneActions::Force(std::size_t i, std::uint64_t world, std::uint64_t 
   return BodyForce{body_, {CartpoleForce(seed, world, step), 0.0f, 0.0f}};
 }
 
-void SceneActions::Apply(Batch& batch, std::uint64_t step, std::uint64_t seed) const {
+void SceneActions::Apply(Batch& batch, std::uint64_t step, std::uint64_t seed,
+                         std::uint64_t first_world) const {
   const std::size_t worlds = batch.world_count();
   if (forces_per_world_ != 0) {
     const std::uint64_t key = StepKey(seed, step);
     std::vector<float> forces(worlds * 3, 0.0f);
-    for (std::size_t world = 0; world < worlds; ++world) forces[world * 3] = ForceOf(key, world);
+    for (std::size_t world = 0; world < worlds; ++world) {
+      forces[world * 3] = ForceOf(key, first_world + world);
+    }
     batch.SetForces(body_, forces);
   }
   std::vector<float> targets(worlds);
   for (std::size_t i = 0; i < targets_.size(); ++i) {
     for (std::size_t world = 0; world < worlds; ++world) {
-      targets[world] = Target(i, world, step, seed).position;
+      targets[world] = Target(i, first_world + world, step, seed).position;
     }
     batch.SetTargetPositions(targets_[i].constraint, targets);
   }

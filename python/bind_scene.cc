@@ -7,6 +7,7 @@
 #include "manyworlds/mass_range.h"
 #include "manyworlds/scene.h"
 #include "manyworlds/scenes.h"
+#include "manyworlds/shard.h"
 #include "manyworlds/targets.h"
 #include "python/bindings.h"
 
@@ -109,7 +110,19 @@ void BindSceneCatalogue(py::module_& m) {
       .def("target", &SceneActions::Target, py::arg("i"), py::arg("world"), py::arg("step"),
            py::arg("seed"))
       .def("apply", &SceneActions::Apply, py::arg("batch"), py::arg("step"), py::arg("seed"),
-           "Sets the forces and targets of every world of `batch` for its next step.");
+           py::arg("first_world") = 0,
+           "Sets the forces and targets of every world of `batch` for its next step; "
+           "local world i gets world first_world + i's (a shard of a larger batch).");
+  m.def(
+      "shard_of_worlds",
+      [](std::size_t total_worlds, int rank, int ranks) {
+        const WorldShard shard = ShardOfWorlds(total_worlds, rank, ranks);
+        return py::make_tuple(shard.first, shard.count);
+      },
+      py::arg("total_worlds"), py::arg("rank"), py::arg("ranks"),
+      "(first, count): the global worlds rank `rank` of `ranks` owns (C++ ShardOfWorlds, "
+      "docs/scale-out.md): contiguous, balanced to whole blocks of 16 worlds. ValueError "
+      "when total_worlds < ranks.");
   m.def("cartpole_force", &CartpoleForce, py::arg("seed"), py::arg("world"), py::arg("step"),
         "The reference cartpole's cart force (N) of a world at a step.");
 

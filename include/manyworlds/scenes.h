@@ -109,7 +109,11 @@ class SceneActions {
                      std::uint64_t seed) const;
 
   // Sets the forces and targets of every world of the batch for its next Step.
-  void Apply(Batch& batch, std::uint64_t step, std::uint64_t seed) const;
+  // Local world i gets the actions of world first_world + i: a shard of a
+  // larger batch (ShardedBatch, docs/scale-out.md) passes its first global
+  // world, so that every world sees the same actions whatever the sharding.
+  void Apply(Batch& batch, std::uint64_t step, std::uint64_t seed,
+             std::uint64_t first_world = 0) const;
 
   // The same forces for world `world_index`, given to one world of a scalar
   // stepper with SetForce(body, Vec3) and body(i).position of that Vec3 type

@@ -11,12 +11,16 @@
 #       (PKG_CONFIG_PATH), warnings as errors;
 #   (d) extracts the README's complete example (the ```cpp block after the
 #       marker line below) and builds it exactly as written in (b), then
-#       runs it, so README and test cannot drift.
+#       runs it, so README and test cannot drift;
+#   (e) with MPIEXEC (a build with the MPI layer, mpi/): the MPI header,
+#       library and export are installed too, and the consumer's
+#       ShardedBatch program (find_package gives manyworlds::mpi) builds and
+#       runs under MPIEXEC with 2 ranks.
 # Usage: package_test.sh SOURCE_DIR BUILD_DIR WORK_DIR LIBDIR INCLUDEDIR
-#                        CMAKE CXX PKG_CONFIG VERSION [CONFIG]
+#                        CMAKE CXX PKG_CONFIG VERSION [CONFIG [MPIEXEC]]
 set -euo pipefail
 source_dir=$1 build_dir=$2 work=$3 libdir=$4 includedir=$5
-cmake=$6 cxx=$7 pkg_config=$8 version=$9 config=${10:-}
+cmake=$6 cxx=$7 pkg_config=$8 version=$9 config=${10:-} mpiexec=${11:-}
 marker='<!-- package-test: the README example -->'
 
 fail() { echo "package_test: $*" >&2; exit 1; }
@@ -33,8 +37,12 @@ config_args=()
 "$cmake" --install "$build_dir" --prefix "$prefix" "${config_args[@]}" >"$work/install.log" ||
   { cat "$work/install.log" >&2; fail "cmake --install failed"; }
 
-# Every public header, and nothing but them under include/.
-expected_headers=$(cd "$source_dir/include" && find manyworlds -name '*.h' | sort)
+# Every public header, and nothing but them under include/ (with MPI, the
+# MPI layer's header too).
+expected_headers=$( (cd "$source_dir/include" && find manyworlds -name '*.h'
+                     if [ -n "$mpiexec" ]; then
+                       cd "$source_dir/mpi/include" && find manyworlds -name '*.h'
+                     fi) | sort)
 installed_headers=$(cd "$prefix/$includedir" && find . -type f | sed 's|^\./||' | sort)
 [ -n "$expected_headers" ] || fail "no headers in $source_dir/include/manyworlds"
 [ "$expected_headers" = "$installed_headers" ] ||
@@ -49,12 +57,19 @@ for file in "$libdir/libmanyworlds_batch.a" "$libdir/libmanyworlds_kernels.a" \
             "$libdir/pkgconfig/manyworlds.pc"; do
   [ -s "$prefix/$file" ] || fail "$file not installed"
 done
+libraries='batch|kernels' exports='Targets|Targets-[a-z]+'
+if [ -n "$mpiexec" ]; then
+  for file in "$libdir/libmanyworlds_mpi.a" "$libdir/cmake/manyworlds/manyworldsMpiTargets.cmake"; do
+    [ -s "$prefix/$file" ] || fail "$file not installed (a build with MPI)"
+  done
+  libraries='batch|kernels|mpi' exports='Targets|Targets-[a-z]+|MpiTargets|MpiTargets-[a-z]+'
+fi
 # Nothing else of the C++ package: no private headers, other libraries or
 # stray CMake files. (Files elsewhere, e.g. a Python module's, are not this
 # test's business.)
 unexpected=$(cd "$prefix" && find . -type f | sed 's|^\./||' |
   grep -E "^$includedir/|^$libdir/[^/]+$|^$libdir/cmake/|^$libdir/pkgconfig/" | grep -v -E \
-  "^$includedir/manyworlds/[a-z_]+\.h$|^$libdir/libmanyworlds_(batch|kernels)\.a$|^$libdir/cmake/manyworlds/manyworlds(Config|ConfigVersion|Targets|Targets-[a-z]+)\.cmake$|^$libdir/pkgconfig/manyworlds\.pc$" || true)
+  "^$includedir/manyworlds/[a-z_]+\.h$|^$libdir/libmanyworlds_($libraries)\.a$|^$libdir/cmake/manyworlds/manyworlds(Config|ConfigVersion|$exports)\.cmake$|^$libdir/pkgconfig/manyworlds\.pc$" || true)
 [ -z "$unexpected" ] || fail "unexpected files installed:
 $unexpected"
 
@@ -71,17 +86,26 @@ if grep -l -F -e "$source_dir" -e "$build_dir" "$cmake_dir"/*.cmake \
 fi
 
 # The installed API is include/manyworlds alone: every #include of a public
-# header is a standard header or another public header, and each header
+# header is a standard header or another public header (or MPI's, in the MPI
+# layer's), and each header
 # compiles on its own with only the prefix on the include path.
 bad_includes=$(grep -H -E '^[[:space:]]*#[[:space:]]*include' "$prefix/$includedir"/manyworlds/*.h |
-  grep -v -E '#[[:space:]]*include[[:space:]]+(<[a-z_]+>|"manyworlds/[a-z_]+\.h")' || true)
+  grep -v -E '#[[:space:]]*include[[:space:]]+(<[a-z_]+>|"manyworlds/[a-z_]+\.h")' |
+  grep -v -E '/manyworlds/sharded_batch\.h:#[[:space:]]*include[[:space:]]+<mpi\.h>' || true)
 [ -z "$bad_includes" ] || fail "public headers include something outside the API:
 $bad_includes"
+# The MPI layer's header also sees MPI's own (the flags of MPI's mpicxx).
+mpi_cflags=()
+if [ -n "$mpiexec" ]; then
+  read -r -a mpi_cflags < <("$(dirname "$mpiexec")/mpicxx" --showme:compile)
+fi
 for header in "$prefix/$includedir"/manyworlds/*.h; do
   name=manyworlds/$(basename "$header")
+  extra=()
+  [ "$name" = manyworlds/sharded_batch.h ] && extra=("${mpi_cflags[@]}")
   printf '#include "%s"\n' "$name" |
     "$cxx" -std=c++20 -fsyntax-only -Wall -Wextra -Wpedantic -Werror \
-      -I"$prefix/$includedir" -x c++ - ||
+      -I"$prefix/$includedir" "${extra[@]}" -x c++ - ||
     fail "$name does not compile on its own"
 done
 step "installed: $(echo "$installed_headers" | wc -l) headers, 2 libraries, CMake package, manyworlds.pc; headers self-contained"
@@ -143,5 +167,15 @@ read -r -a pc_libs < <("$pkg_config" --libs manyworlds)
   "$source_dir/tests/package/consumer/consumer.cc" "${pc_libs[@]}" -o "$work/consumer-pc" ||
   fail "the consumer does not build with: $cxx ${pc_cflags[*]} consumer.cc ${pc_libs[*]}"
 "$work/consumer-pc" || fail "the consumer (pkg-config) failed"
+
+# ---- (e) the MPI layer from an outside project, under mpirun
+if [ -n "$mpiexec" ]; then
+  step "running the consumer's ShardedBatch program with 2 MPI ranks"
+  [ -x "$work/consumer-build/mpi_consumer" ] ||
+    fail "find_package(manyworlds) gave no manyworlds::mpi: the consumer's mpi_consumer was not built"
+  OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 \
+    "$mpiexec" -n 2 --oversubscribe "$work/consumer-build/mpi_consumer" ||
+    fail "the consumer's ShardedBatch program failed under $mpiexec -n 2"
+fi
 
 step "passed: installed, find_package and pkg-config consumers and the README example built and ran"
