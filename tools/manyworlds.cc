@@ -33,8 +33,12 @@
 #include "tools/options.h"
 #include "tools/progress.h"
 #include "tools/record_option.h"
+#include "tools/run_command.h"
 #include "tools/run_report.h"
 #include "tools/sweep.h"
+#ifdef MANYWORLDS_WITH_MPI
+#include "tools/sharded_run.h"
+#endif
 
 namespace {
 
@@ -79,49 +83,8 @@ constexpr const char* kUsage =
     "exit codes: 0 done, 1 refused by the library or the file system, 2 bad\n"
     "arguments, 130 run interrupted by Ctrl-C\n";
 
-// The exit code of a run stopped by SIGINT: 128 + 2, what a shell reports
-// for a program the signal killed.
-constexpr int kExitInterrupted = 130;
-
 // The line after a usage error, instead of the whole usage.
 constexpr const char* kUsageHint = "run 'manyworlds --help' for usage";
-
-// The scene of --scene; a UsageError naming the option for a missing or
-// unknown id (the library's message lists every valid id).
-Scene SceneOf(const Options& options) {
-  if (!options.Has("--scene")) {
-    throw UsageError("--scene is required: a scene id, e.g. cartpole ('manyworlds scenes' "
-                     "lists them all)");
-  }
-  try {
-    return MakeScene(options.Text("--scene"));
-  } catch (const std::invalid_argument& e) {
-    throw UsageError(std::string("--scene: ") + e.what());
-  }
-}
-
-// Applies --mass-range-limit R (0 or absent: off) to `scene` and describes
-// what it changed, for the report.
-std::string MassRangeLimitOf(const Options& options, Scene& scene) {
-  const double limit = tools::MassRangeLimitOption(options);
-  if (limit == 0) return "off";
-  const auto dynamic_mass = [&scene] {
-    double sum = 0;
-    for (const BodySettings& body : scene.bodies()) {
-      if (body.motion_type == MotionType::kDynamic) sum += double(body.mass);
-    }
-    return sum;
-  };
-  const double before = dynamic_mass();
-  const std::vector<MassRaise> raised = LimitMassRange(scene, float(limit));
-  const double after = dynamic_mass();
-  char text[160];
-  std::snprintf(text, sizeof text,
-                "%g: %zu bodies raised, dynamic mass %.4g kg -> %.4g kg (%+.3g %%)",
-                limit, raised.size(), before, after,
-                before > 0 ? 100.0 * (after - before) / before : 0.0);
-  return text;
-}
 
 // One line per scene: id, bodies, constraints and what it tests.
 int Scenes() {
@@ -143,74 +106,35 @@ int Plan(int argc, char** argv) {
 }
 
 int Run(int argc, char** argv) {
-  const Options options(argc, argv,
-                        {"--scene", "--worlds", "--steps", "--threads", "--substeps",
-                         "--velocity-iterations", "--position-iterations", "--warmup",
-                         "--seed", "--mass-range-limit", tools::kRecordOption,
-                         tools::kRecordWorldsOption},
-                        {"--profile"});
-  Scene scene = SceneOf(options);
-  const std::string id = options.Text("--scene");
-  const std::string mass_range = MassRangeLimitOf(options, scene);
-  const std::size_t worlds = options.Number("--worlds", 4096, 1, std::uint64_t(1) << 26);
-  const std::uint64_t steps = options.Number("--steps", 1000, 1, 1'000'000'000);
-  const std::uint64_t warmup = options.Number("--warmup", 20, 0, 1'000'000'000);
-  const std::uint64_t seed = options.Number("--seed", 1, 0, UINT64_MAX);
-  BatchOptions batch_options;
-  batch_options.threads = int(options.Number("--threads", 0, 0, 4096));
-  batch_options.profile_phases = options.Has("--profile");
-  // The spec's defaults (dt 1/60 s, gravity -9.81 Y, Baumgarte 0.2), or the
-  // stress scene's own dt.
-  StepSettings settings = SceneStepSettings(options.Text("--scene"));
-  settings.substeps = int(options.Number("--substeps", 1, 1, 10'000));
-  settings.velocity_iterations = int(options.Number("--velocity-iterations", 10, 0, 10'000));
-  settings.position_iterations = int(options.Number("--position-iterations", 2, 0, 10'000));
-
-  Batch batch(scene, worlds, batch_options);
-  const SceneActions actions(id);
-  tools::RunRecording recording(options, batch, id, settings.delta_time);
+  const Options options = tools::RunOptions(argc, argv);
+  const tools::RunSetup setup = tools::ParseRunSetup(options);
+  Batch batch(setup.scene, setup.worlds, setup.batch_options);
+  tools::RunRecording recording(options, batch, setup.scene_id, setup.settings.delta_time);
   // Ctrl-C stops at the next step boundary and still reports; on a terminal
   // a progress line shows how far the run is (tools/progress.h).
   const tools::SigintStop sigint;
-  tools::ProgressLine progress(warmup + steps, worlds);
-  std::uint64_t step = 0;
-  recording.Capture(batch, step);
-  for (; step < warmup && !sigint.requested(); ++step) {
-    actions.Apply(batch, step, seed);
-    batch.Step(settings);
-    recording.Capture(batch, step + 1);
-    progress.Update(step + 1);
-  }
-  batch.ResetPhaseProfile();  // --profile: the timed steps only
-  const auto start = std::chrono::steady_clock::now();
-  for (; step < warmup + steps && !sigint.requested(); ++step) {
-    actions.Apply(batch, step, seed);
-    batch.Step(settings);
-    recording.Capture(batch, step + 1);
-    progress.Update(step + 1);
-  }
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  tools::ProgressLine progress(setup.warmup + setup.steps, setup.worlds);
+  const tools::LoopResult loop = tools::StepLoop(
+      batch, 0, setup, recording, progress, [&] { return sigint.requested(); },
+      [&] { batch.Step(setup.settings); }, [] {});
   progress.Erase();
   recording.Close();
-  // A SIGINT after the last step changes nothing: the run is complete.
-  const bool interrupted = step < warmup + steps;
-  tools::PrintRunReport(batch, actions,
-                        {.scene_id = id,
-                         .mass_range = mass_range,
-                         .settings = settings,
-                         .warmup_steps = warmup,
-                         .timed_steps = steps,
-                         .steps_done = step,
-                         .timed_seconds = seconds,
-                         .interrupted = interrupted,
-                         .recording = recording.Describe()});
-  if (!interrupted) return 0;
-  std::fprintf(stderr, "manyworlds: interrupted by SIGINT after step %llu of %llu; the report "
-                       "covers the steps done\n",
-               static_cast<unsigned long long>(step),
-               static_cast<unsigned long long>(warmup + steps));
-  return kExitInterrupted;
+  const std::uint64_t timed_done = loop.steps_done - std::min(loop.steps_done, setup.warmup);
+  tools::PrintRunReport(batch, SceneActions(setup.scene_id),
+                        {.scene_id = setup.scene_id,
+                         .mass_range = setup.mass_range,
+                         .settings = setup.settings,
+                         .warmup_steps = setup.warmup,
+                         .timed_steps = setup.steps,
+                         .steps_done = loop.steps_done,
+                         .timed_seconds = loop.timed_seconds,
+                         .interrupted = loop.interrupted,
+                         .recording = recording.Describe(),
+                         .rank_worlds = {},
+                         .rank_world_steps_per_second = {},
+                         .rank_other_seconds_per_step = {}},
+                        tools::WorldStats::Of(batch, timed_done));
+  return loop.interrupted ? tools::ReportInterrupted(loop.steps_done, setup) : 0;
 }
 
 }  // namespace
@@ -224,7 +148,19 @@ int main(int argc, char** argv) {
     }
   }
   try {
-    if (command == "run") return Run(argc, argv);
+    if (command == "run") {
+      // `mpirun -n R manyworlds run ...`: the worlds sharded over the ranks.
+      if (tools::StartedByMpirun()) {
+#ifdef MANYWORLDS_WITH_MPI
+        return tools::ShardedRun(argc, argv);
+#else
+        throw std::runtime_error(
+            "started by mpirun, but this manyworlds was built without MPI: install "
+            "libopenmpi-dev (scripts/install-deps does) and build again, or run without mpirun");
+#endif
+      }
+      return Run(argc, argv);
+    }
     if (command == "plan") return Plan(argc, argv);
     if (command == "sweep") return tools::Sweep(argc, argv);
     if (command == "scenes") {
@@ -242,13 +178,13 @@ int main(int argc, char** argv) {
                                      : "unknown command '" + std::string(command) + "'" +
                                            kCommands);
   } catch (const UsageError& e) {
-    std::fprintf(stderr, "manyworlds: %s\n%s\n", e.what(), kUsageHint);
+    if (tools::PrintsErrors()) std::fprintf(stderr, "manyworlds: %s\n%s\n", e.what(), kUsageHint);
     return 2;
   } catch (const SceneError& e) {
-    std::fprintf(stderr, "manyworlds: the scene was refused: %s\n", e.what());
+    if (tools::PrintsErrors()) std::fprintf(stderr, "manyworlds: the scene was refused: %s\n", e.what());
     return 1;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "manyworlds: %s\n", e.what());
+    if (tools::PrintsErrors()) std::fprintf(stderr, "manyworlds: %s\n", e.what());
     return 1;
   }
 }

@@ -19,6 +19,11 @@ Usage: program_test.py MANYWORLDS CASE, CASE one of
   profile        `run --profile`: the report lists every phase with ns per
                  world-step and shares adding up to 100 %; without --profile
                  there is no phase list
+  mpirun         `mpirun -n 2|3 manyworlds run` (MPIEXEC in the environment):
+                 one report, from rank 0, over every rank's worlds, with the
+                 ranks, their worlds and world-steps/s, and the same constraint
+                 errors and health as the run in one process; a usage error, a
+                 refused --record and too few worlds print one error, exit != 0
 """
 
 import os
@@ -266,7 +271,71 @@ def case_profile():
         fail(f"a run without --profile lists phases or failed: {plain.stdout!r}")
 
 
+def mpirun(ranks, args, timeout=120):
+    command = [os.environ["MPIEXEC"], "-n", str(ranks), "--oversubscribe", MANYWORLDS, *args]
+    return subprocess.run(command, capture_output=True, text=True, timeout=timeout)
+
+
+def report_line(stdout, key):
+    found = re.search(rf"^ *{key}: +(.*)$", stdout, re.M)
+    if not found:
+        fail(f"no '{key}:' line in the report: {stdout!r}")
+    return found.group(1)
+
+
+def case_mpirun():
+    args = ["run", "--scene", "ragdoll", "--worlds", "100", "--steps", "30", "--threads", "1"]
+    alone = run(args)
+    if alone.returncode != 0:
+        fail(f"the run in one process failed: {alone.stderr!r}")
+    for ranks in (2, 3):
+        result = mpirun(ranks, args)
+        if result.returncode != 0:
+            fail(f"{ranks} ranks: exit code {result.returncode}, stderr {result.stderr!r}")
+        if result.stdout.count("scene:") != 1:
+            fail(f"{ranks} ranks: expected one report (rank 0's), got {result.stdout!r}")
+        shares = re.fullmatch(rf"{ranks} \(MPI\), worlds per rank ([0-9 ]+)",
+                              report_line(result.stdout, "ranks"))
+        if not shares or sum(int(w) for w in shares.group(1).split()) != 100:
+            fail(f"{ranks} ranks: the ranks line does not share 100 worlds: {result.stdout!r}")
+        rates = report_line(result.stdout, "throughput per rank").split()[-ranks:]
+        if not all(float(r) > 0 for r in rates):
+            fail(f"{ranks} ranks: expected {ranks} positive rates: {rates}")
+        waits = report_line(result.stdout, "per step, per rank").split()[-ranks:]
+        if not all(float(w) >= 0 for w in waits):
+            fail(f"{ranks} ranks: expected {ranks} times outside stepping: {waits}")
+        if report_line(result.stdout, "worlds") != "100":
+            fail(f"{ranks} ranks: the report does not cover 100 worlds: {result.stdout!r}")
+        # The same worlds bit for bit: the same state digest, worst errors
+        # and health. (The means are sums in another order: equal to
+        # rounding only.)
+        for key in ("state digest", "unhealthy worlds"):
+            if report_line(result.stdout, key) != report_line(alone.stdout, key):
+                fail(f"{ranks} ranks: '{key}' differs from one process")
+        for key in ("linear", "angular"):
+            worst = report_line(result.stdout, key).split(",")[0]
+            if worst != report_line(alone.stdout, key).split(",")[0]:
+                fail(f"{ranks} ranks: worst {key} error {worst!r} differs from one process")
+
+    def expect_one_error(ranks, extra, code, *names):
+        result = mpirun(ranks, ["run", "--scene", "cartpole", "--steps", "5", *extra])
+        errors = [line for line in result.stderr.splitlines() if line.startswith("manyworlds:")]
+        if result.returncode != code or len(errors) != 1 or result.stdout:
+            fail(f"{ranks} ranks, {extra}: exit {result.returncode} (expected {code}), "
+                 f"expected one error line and no report, got {result.stderr!r} {result.stdout!r}")
+        for name in names:
+            if name not in errors[0]:
+                fail(f"{ranks} ranks, {extra}: the error does not name {name!r}: {errors[0]!r}")
+
+    expect_one_error(2, ["--worlds", "0"], 2, "--worlds")
+    expect_one_error(2, ["--record", "never.npz"], 2, "--record", "one process")
+    expect_one_error(3, ["--worlds", "2"], 1, "rank 0", "every rank needs at least one world")
+    if os.path.exists("never.npz"):
+        fail("a refused --record left never.npz behind")
+
+
 CASES = {
+    "mpirun": case_mpirun,
     "profile": case_profile,
     "errors": case_errors,
     "unknown-scene": case_unknown_scene,

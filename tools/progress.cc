@@ -51,8 +51,8 @@ std::string Duration(double seconds) {
 
 }  // namespace
 
-ProgressLine::ProgressLine(std::uint64_t total_steps, std::size_t worlds)
-    : enabled_(isatty(STDERR_FILENO) == 1), total_steps_(total_steps), worlds_(double(worlds)) {
+ProgressLine::ProgressLine(std::uint64_t total_steps, std::size_t worlds, bool wanted)
+    : enabled_(wanted && isatty(STDERR_FILENO) == 1), total_steps_(total_steps), worlds_(double(worlds)) {
   if (!enabled_) return;
   start_ = Clock::now();
   next_draw_ = start_ + kFirstDraw;

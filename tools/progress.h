@@ -16,7 +16,8 @@ namespace manyworlds::tools {
 // or redirected output is exactly what it would be without it.
 class ProgressLine {
  public:
-  ProgressLine(std::uint64_t total_steps, std::size_t worlds);
+  // wanted = false: never drawn (the ranks of a sharded run but rank 0).
+  ProgressLine(std::uint64_t total_steps, std::size_t worlds, bool wanted = true);
   ~ProgressLine() { Erase(); }
   ProgressLine(const ProgressLine&) = delete;
   ProgressLine& operator=(const ProgressLine&) = delete;

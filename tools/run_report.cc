@@ -5,59 +5,95 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
+#include <vector>
 #include <span>
 
 namespace manyworlds::tools {
 namespace {
 
-// Max and mean over worlds of one part of the constraint error; worlds whose
-// error is not finite are counted apart, not averaged in.
-struct OverWorlds {
-  double max = 0.0;
-  double sum = 0.0;
-  std::size_t finite = 0;
-  void Add(double error) {
-    max = std::max(max, error);
-    sum += error;
-    ++finite;
-  }
-  double mean() const { return finite > 0 ? sum / double(finite) : 0.0; }
-};
-
 unsigned long long Ull(std::uint64_t value) { return static_cast<unsigned long long>(value); }
+
+// SplitMix64's finaliser: every input bit reaches every output bit.
+std::uint64_t Mix(std::uint64_t x) {
+  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
+  x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
+  return x ^ (x >> 31);
+}
 
 }  // namespace
 
-void PrintRunReport(const Batch& batch, const SceneActions& actions, const RunFacts& facts) {
-  const std::size_t worlds = batch.world_count();
+WorldStats WorldStats::Of(const Batch& batch, std::uint64_t timed_steps_done,
+                          std::uint64_t first_world) {
+  WorldStats stats;
+  const std::size_t per_world = batch.body_count() * kStateFloatsPerBody;
+  std::vector<float> states(batch.world_count() * per_world);
+  batch.GetState(states);
+  for (std::size_t w = 0; w < batch.world_count(); ++w) {
+    std::uint64_t hash = Mix(first_world + w);
+    for (std::size_t i = 0; i < per_world; ++i) {
+      std::uint32_t bits;
+      std::memcpy(&bits, &states[w * per_world + i], sizeof bits);
+      hash = Mix(hash ^ bits);
+    }
+    stats.state_digest += hash;
+  }
+  stats.worlds = batch.world_count();
+  stats.timed_world_steps = stats.worlds * timed_steps_done;
+  // Worlds whose error is not finite are counted apart, not averaged in.
+  for (std::size_t w = 0; w < batch.world_count(); ++w) {
+    const ConstraintErrorSplit e = batch.MaxConstraintErrorSplit(w);
+    if (!std::isfinite(e.linear) || !std::isfinite(e.angular)) {
+      ++stats.non_finite_errors;
+      continue;
+    }
+    ++stats.finite_errors;
+    stats.linear_max = std::max(stats.linear_max, e.linear);
+    stats.linear_sum += e.linear;
+    stats.angular_max = std::max(stats.angular_max, e.angular);
+    stats.angular_sum += e.angular;
+  }
+  // The library's own health check of the last step (WorldHealthBits).
+  for (const std::uint8_t bits : batch.WorldHealth()) {
+    stats.unhealthy += bits != 0;
+    for (int bit = 0; bit < 4; ++bit) stats.by_bit[bit] += (bits >> bit) & 1u;
+  }
+  return stats;
+}
+
+void WorldStats::Add(const WorldStats& other) {
+  worlds += other.worlds;
+  timed_world_steps += other.timed_world_steps;
+  finite_errors += other.finite_errors;
+  non_finite_errors += other.non_finite_errors;
+  linear_max = std::max(linear_max, other.linear_max);
+  linear_sum += other.linear_sum;
+  angular_max = std::max(angular_max, other.angular_max);
+  angular_sum += other.angular_sum;
+  unhealthy += other.unhealthy;
+  for (int bit = 0; bit < 4; ++bit) by_bit[bit] += other.by_bit[bit];
+  state_digest += other.state_digest;
+}
+
+void PrintRunReport(const Batch& batch, const SceneActions& actions, const RunFacts& facts,
+                    const WorldStats& stats) {
   const StepSettings& settings = facts.settings;
   // A run stopped by SIGINT may have stopped in the warm-up: then no step was timed.
   const std::uint64_t warmup_done = std::min(facts.steps_done, facts.warmup_steps);
   const std::uint64_t timed_done = facts.steps_done - warmup_done;
-
-  // Accuracy and health after the last step.
-  OverWorlds linear, angular;
-  std::size_t bad_error = 0;
-  for (std::size_t w = 0; w < worlds; ++w) {
-    const ConstraintErrorSplit e = batch.MaxConstraintErrorSplit(w);
-    if (!std::isfinite(e.linear) || !std::isfinite(e.angular)) {
-      ++bad_error;
-      continue;
-    }
-    linear.Add(e.linear);
-    angular.Add(e.angular);
-  }
-  // The library's own health check of the last step (WorldHealthBits).
-  std::size_t by_bit[4] = {0, 0, 0, 0};
-  for (const std::uint8_t bits : batch.WorldHealth()) {
-    for (int bit = 0; bit < 4; ++bit) by_bit[bit] += (bits >> bit) & 1u;
-  }
+  const std::size_t ranks = std::max<std::size_t>(facts.rank_worlds.size(), 1);
 
   std::printf("scene:                %s (%zu bodies, %zu %s)\n", facts.scene_id.c_str(),
               batch.body_count(), batch.constraint_count(),
               batch.constraint_count() == 1 ? "constraint" : "constraints");
-  std::printf("worlds:               %zu\n", worlds);
-  std::printf("threads:              %d\n", batch.threads());
+  std::printf("worlds:               %llu\n", Ull(stats.worlds));
+  if (!facts.rank_worlds.empty()) {
+    std::printf("ranks:                %zu (MPI), worlds per rank", ranks);
+    for (const std::size_t worlds : facts.rank_worlds) std::printf(" %zu", worlds);
+    std::printf("\n");
+  }
+  std::printf("threads:              %d%s\n", batch.threads(),
+              facts.rank_worlds.empty() ? "" : " per rank");
   std::printf("SIMD target:          %s, %zu float lanes per vector\n", batch.SimdTarget(),
               batch.SimdLanes());
   std::printf("precision:            float\n");
@@ -85,13 +121,25 @@ void PrintRunReport(const Batch& batch, const SceneActions& actions, const RunFa
                 Ull(facts.warmup_steps), facts.timed_seconds, Ull(facts.steps_done),
                 Ull(facts.warmup_steps + facts.timed_steps));
   }
-  const double world_steps = double(worlds) * double(timed_done);
-  if (timed_done > 0 && facts.timed_seconds > 0) {
-    std::printf("throughput:           %.4g world-steps/s\n", world_steps / facts.timed_seconds);
+  const double world_steps = double(stats.timed_world_steps);
+  if (world_steps > 0 && facts.timed_seconds > 0) {
+    std::printf("throughput:           %.4g world-steps/s%s\n", world_steps / facts.timed_seconds,
+                facts.rank_worlds.empty() ? "" : " (all ranks, over the slowest rank's wall time)");
     std::printf("time per world-step:  %.4g ns\n", facts.timed_seconds * 1e9 / world_steps);
   } else {
     std::printf("throughput:           none (no timed step)\n");
     std::printf("time per world-step:  none (no timed step)\n");
+  }
+  if (!facts.rank_world_steps_per_second.empty()) {
+    std::printf("throughput per rank:  world-steps/s while stepping its worlds");
+    for (const double rate : facts.rank_world_steps_per_second) std::printf(" %.4g", rate);
+    std::printf("\n");
+    std::printf("per step, per rank:   us outside its own stepping (2 allreduces of an int, "
+                "waiting for slower ranks, the actions)");
+    for (const double seconds : facts.rank_other_seconds_per_step) {
+      std::printf(" %.3g", seconds * 1e6);
+    }
+    std::printf("\n");
   }
   // --profile: the timed steps' phases (the profile is reset after the
   // warm-up), in thread time per world-step, so they add up to the time per
@@ -100,8 +148,9 @@ void PrintRunReport(const Batch& batch, const SceneActions& actions, const RunFa
   if (profile.world_steps > 0) {
     double total = 0.0;
     for (double seconds : profile.seconds) total += seconds;
-    std::printf("phases:               ns per world-step (thread time) and share, %.4g ns in all\n",
-                total * 1e9 / double(profile.world_steps));
+    std::printf("phases:               ns per world-step (thread time) and share, %.4g ns in all%s\n",
+                total * 1e9 / double(profile.world_steps),
+                facts.rank_worlds.empty() ? "" : ", rank 0's worlds");
     for (std::size_t p = 0; p < kStepPhaseCount; ++p) {
       std::printf("  %-19s %8.4g ns  %4.1f %%\n", StepPhaseName(StepPhase(p)),
                   profile.seconds[p] * 1e9 / double(profile.world_steps),
@@ -112,21 +161,25 @@ void PrintRunReport(const Batch& batch, const SceneActions& actions, const RunFa
               batch.BytesPerWorld());
   // batch/constraint_error.h: each world's worst row of each unit, measured
   // against the constraint itself (0 = it holds exactly), not a reference run.
+  const double finite = double(std::max<std::uint64_t>(stats.finite_errors, 1));
   std::printf("constraint error:     how far the poses after step %llu violate the constraints "
               "(0 = exact), worst row of each world, max and mean over worlds:\n",
               Ull(facts.steps_done));
   std::printf("  linear:             max %.3g m, mean %.3g m (anchor separation, anchor off "
               "a slider axis or path, linear limit, distance and pulley length violations)\n",
-              linear.max, linear.mean());
+              stats.linear_max, stats.linear_sum / finite);
   std::printf("  angular:            max %.3g rad, mean %.3g rad (rotation from the rest pose, "
               "angle between hinge axes, angular limit violations, gear and rack-and-pinion "
               "coupling)\n",
-              angular.max, angular.mean());
-  std::printf("unhealthy worlds:     %zu of %zu after the last step (non-finite state %zu, "
-              "velocity overflow %zu, position out of range %zu, non-finite input %zu); "
-              "%zu with a non-finite constraint error\n",
-              batch.UnhealthyWorldCount(), worlds, by_bit[0], by_bit[1], by_bit[2], by_bit[3],
-              bad_error);
+              stats.angular_max, stats.angular_sum / finite);
+  std::printf("unhealthy worlds:     %llu of %llu after the last step (non-finite state %llu, "
+              "velocity overflow %llu, position out of range %llu, non-finite input %llu); "
+              "%llu with a non-finite constraint error\n",
+              Ull(stats.unhealthy), Ull(stats.worlds), Ull(stats.by_bit[0]), Ull(stats.by_bit[1]),
+              Ull(stats.by_bit[2]), Ull(stats.by_bit[3]), Ull(stats.non_finite_errors));
+  std::printf("state digest:         %016llx (every world's final state bits; equal digests "
+              "mean the same worlds bit for bit, whatever the threads or MPI ranks)\n",
+              Ull(stats.state_digest));
 }
 
 }  // namespace manyworlds::tools
