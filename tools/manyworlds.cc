@@ -129,6 +129,7 @@ int Run(int argc, char** argv) {
                          .steps_done = loop.steps_done,
                          .timed_seconds = loop.timed_seconds,
                          .interrupted = loop.interrupted,
+                         .stop_signal = "SIGINT",
                          .recording = recording.Describe(),
                          .rank_worlds = {},
                          .rank_world_steps_per_second = {},

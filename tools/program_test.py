@@ -23,7 +23,9 @@ Usage: program_test.py MANYWORLDS CASE, CASE one of
                  one report, from rank 0, over every rank's worlds, with the
                  ranks, their worlds and world-steps/s, and the same constraint
                  errors and health as the run in one process; a usage error, a
-                 refused --record and too few worlds print one error, exit != 0
+                 refused --record and too few worlds print one error, exit != 0;
+                 SIGUSR1 to mpirun stops every rank after the same step, with
+                 rank 0's report
 """
 
 import os
@@ -326,6 +328,22 @@ def case_mpirun():
         for name in names:
             if name not in errors[0]:
                 fail(f"{ranks} ranks, {extra}: the error does not name {name!r}: {errors[0]!r}")
+
+    # Stopped by SIGUSR1 to mpirun (which forwards it to every rank; Ctrl-C
+    # would end the job): every rank stops after the same step and rank 0
+    # reports the steps done.
+    command = [os.environ["MPIEXEC"], "-n", "2", "--oversubscribe", MANYWORLDS, *LONG_RUN]
+    process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    time.sleep(3.0)
+    if process.poll() is not None:
+        fail(f"the mpirun run ended before SIGUSR1: {process.communicate()}")
+    process.send_signal(signal.SIGUSR1)
+    stdout, stderr = process.communicate(timeout=60)
+    found = re.search(r"interrupted by SIGUSR1 after step (\d+) of (\d+)", stdout)
+    if not found or not 0 < int(found.group(1)) < int(found.group(2)):
+        fail(f"SIGUSR1 under mpirun: no interrupted report: {stdout!r} {stderr!r}")
+    if stdout.count("scene:") != 1 or "ranks:" not in stdout:
+        fail(f"SIGUSR1 under mpirun: expected rank 0's report once: {stdout!r}")
 
     expect_one_error(2, ["--worlds", "0"], 2, "--worlds")
     expect_one_error(2, ["--record", "never.npz"], 2, "--record", "one process")

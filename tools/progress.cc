@@ -33,7 +33,7 @@ static_assert(std::atomic<bool>::is_always_lock_free);
 extern "C" void OnSigint(int) { sigint_received.store(true, std::memory_order_relaxed); }
 
 struct sigaction previous_action;
-bool installed = false;
+int installed_signal = 0;  // 0: none installed
 
 // The time left as people read it: "42 s", "7 min 05 s", "3 h 20 min".
 std::string Duration(double seconds) {
@@ -83,8 +83,8 @@ void ProgressLine::Erase() {
   shown_ = false;
 }
 
-SigintStop::SigintStop() {
-  if (installed) throw std::logic_error("SigintStop: one at a time");
+SigintStop::SigintStop(int signal) : signal_(signal) {
+  if (installed_signal != 0) throw std::logic_error("SigintStop: one at a time");
   sigint_received.store(false);
   struct sigaction action = {};
   action.sa_handler = OnSigint;
@@ -92,13 +92,13 @@ SigintStop::SigintStop() {
   // SA_RESETHAND: the first SIGINT puts the default action back, so the
   // second one kills. No SA_RESTART needed: the loop makes no blocking calls.
   action.sa_flags = SA_RESETHAND;
-  sigaction(SIGINT, &action, &previous_action);
-  installed = true;
+  sigaction(signal_, &action, &previous_action);
+  installed_signal = signal_;
 }
 
 SigintStop::~SigintStop() {
-  sigaction(SIGINT, &previous_action, nullptr);
-  installed = false;
+  sigaction(signal_, &previous_action, nullptr);
+  installed_signal = 0;
 }
 
 bool SigintStop::requested() const { return sigint_received.load(std::memory_order_relaxed); }

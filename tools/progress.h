@@ -42,18 +42,23 @@ class ProgressLine {
   Clock::time_point next_draw_;
 };
 
-// While alive, SIGINT only sets a flag (requested()) that the run loop checks
-// between steps; the handler is installed with SA_RESETHAND, so a second
-// Ctrl-C gets the default action and kills the program as usual. The
-// previous action is restored on destruction. One at a time.
+// While alive, SIGINT (or `signal`) only sets a flag (requested()) that the
+// run loop checks between steps; the handler is installed with
+// SA_RESETHAND, so a second one gets the default action and kills the
+// program as usual. The previous action is restored on destruction. One at
+// a time. (Under mpirun the signal is SIGUSR1, which OpenMPI's mpirun
+// forwards to every rank; Ctrl-C makes mpirun end the job.)
 class SigintStop {
  public:
-  SigintStop();
+  explicit SigintStop(int signal = 2 /* SIGINT */);
   ~SigintStop();
   SigintStop(const SigintStop&) = delete;
   SigintStop& operator=(const SigintStop&) = delete;
 
   bool requested() const;
+
+ private:
+  int signal_;
 };
 
 }  // namespace manyworlds::tools

@@ -110,10 +110,10 @@ LoopResult StepLoop(Batch& batch, std::uint64_t first_world, const RunSetup& set
   return result;
 }
 
-int ReportInterrupted(std::uint64_t steps_done, const RunSetup& setup) {
-  std::fprintf(stderr, "manyworlds: interrupted by SIGINT after step %llu of %llu; the report "
+int ReportInterrupted(std::uint64_t steps_done, const RunSetup& setup, const char* signal) {
+  std::fprintf(stderr, "manyworlds: interrupted by %s after step %llu of %llu; the report "
                        "covers the steps done\n",
-               static_cast<unsigned long long>(steps_done),
+               signal, static_cast<unsigned long long>(steps_done),
                static_cast<unsigned long long>(setup.warmup + setup.steps));
   return 130;
 }

@@ -56,9 +56,11 @@ LoopResult StepLoop(Batch& batch, std::uint64_t first_world, const RunSetup& set
                     const std::function<void()>& step_batch,
                     const std::function<void()>& timing_starts);
 
-// A run stopped by Ctrl-C: says so on stderr (after the report) and returns
-// the exit code 130, what a shell reports for a program SIGINT killed.
-int ReportInterrupted(std::uint64_t steps_done, const RunSetup& setup);
+// A run stopped by Ctrl-C (or `signal`): says so on stderr (after the
+// report) and returns the exit code 130, what a shell reports for a program
+// SIGINT killed.
+int ReportInterrupted(std::uint64_t steps_done, const RunSetup& setup,
+                      const char* signal = "SIGINT");
 
 // Whether mpirun (or mpiexec) started this process: OpenMPI's
 // OMPI_COMM_WORLD_SIZE, PMIx's PMIX_RANK or MPICH's PMI_SIZE is set. `run`

@@ -116,9 +116,10 @@ void PrintRunReport(const Batch& batch, const SceneActions& actions, const RunFa
                 Ull(facts.timed_steps), Ull(facts.warmup_steps), facts.timed_seconds);
   } else {
     std::printf("timed:                %llu of %llu steps after %llu of %llu warm-up steps, "
-                "%.3f s wall; interrupted by SIGINT after step %llu of %llu\n",
+                "%.3f s wall; interrupted by %s after step %llu of %llu\n",
                 Ull(timed_done), Ull(facts.timed_steps), Ull(warmup_done),
-                Ull(facts.warmup_steps), facts.timed_seconds, Ull(facts.steps_done),
+                Ull(facts.warmup_steps), facts.timed_seconds, facts.stop_signal.c_str(),
+                Ull(facts.steps_done),
                 Ull(facts.warmup_steps + facts.timed_steps));
   }
   const double world_steps = double(stats.timed_world_steps);

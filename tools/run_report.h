@@ -21,7 +21,8 @@ struct RunFacts {
   std::uint64_t timed_steps = 0;   // asked for
   std::uint64_t steps_done = 0;    // warm-up and timed steps actually done
   double timed_seconds = 0.0;      // wall time of the timed steps done (slowest rank)
-  bool interrupted = false;        // SIGINT stopped the run before the end
+  bool interrupted = false;        // a stop signal ended the run before the end
+  std::string stop_signal = "SIGINT";  // which: SIGUSR1 under mpirun
   std::string recording = "off";   // what --record wrote (tools/record_option.h)
   // Under mpirun (tools/sharded_run.h): each rank's worlds and world-steps/s
   // over the time it spent stepping them; empty for a run in one process.

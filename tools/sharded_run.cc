@@ -10,6 +10,7 @@
 #include "tools/sharded_run.h"
 
 #include <mpi.h>
+#include <signal.h>
 
 #include <algorithm>
 #include <chrono>
@@ -87,7 +88,10 @@ int ShardedRun(int argc, char** argv) {
   ShardedBatch sharded(MPI_COMM_WORLD, setup.scene, setup.worlds, setup.batch_options);
   Batch& local = sharded.local();
   RunRecording recording(options, local, setup.scene_id, setup.settings.delta_time);
-  const SigintStop sigint;
+  // OpenMPI's mpirun ends the job on Ctrl-C (SIGINT) but forwards SIGUSR1
+  // to every rank: `kill -USR1 <mpirun's pid>` stops after the same step on
+  // all ranks, with the report.
+  const SigintStop sigint(SIGUSR1);
   ProgressLine progress(setup.warmup + setup.steps, setup.worlds, rank == 0);
   // The time this rank spends stepping its worlds, against the loop's wall
   // time: the rest is MPI (messages and waiting for slower ranks) and the
@@ -97,7 +101,7 @@ int ShardedRun(int argc, char** argv) {
   const LoopResult loop = StepLoop(
       local, sharded.shard().first, setup, recording, progress,
       [&] {
-        // Ctrl-C reaches the ranks at different steps: stop when any rank saw it.
+        // The signal reaches the ranks at different steps: stop when any rank saw it.
         int mine = sigint.requested() ? 1 : 0, any = 0;
         MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, sharded.comm());
         return any != 0;
@@ -146,13 +150,14 @@ int ShardedRun(int argc, char** argv) {
                  .steps_done = loop.steps_done,
                  .timed_seconds = slowest,
                  .interrupted = loop.interrupted,
+                 .stop_signal = "SIGUSR1",
                  .recording = recording.Describe(),
                  .rank_worlds = {},
                  .rank_world_steps_per_second = rates,
                  .rank_other_seconds_per_step = others};
   for (int r = 0; r < ranks; ++r) facts.rank_worlds.push_back(sharded.shard_of(r).count);
   PrintRunReport(local, SceneActions(setup.scene_id), facts, stats);
-  return loop.interrupted ? ReportInterrupted(loop.steps_done, setup) : 0;
+  return loop.interrupted ? ReportInterrupted(loop.steps_done, setup, "SIGUSR1") : 0;
 }
 
 }  // namespace manyworlds::tools
