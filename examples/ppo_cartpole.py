@@ -3,6 +3,7 @@
 
     /usr/bin/python3 examples/ppo_cartpole.py                 # the README's run
     /usr/bin/python3 examples/ppo_cartpole.py --steps 200000  # shorter
+    mpirun -n 2 /usr/bin/python3 examples/ppo_cartpole.py     # 2 MPI ranks
 
 A plain PPO (Schulman et al. 2017, clipped objective) with generalised
 advantage estimation, a Gaussian policy with a state-independent log
@@ -17,6 +18,15 @@ The task is dm_control's cartpole balance (docs/envs.md): 1000 steps of
 deterministic evaluation (the policy's mean action) of --eval-envs fresh
 episodes, twice in a row; a uniformly random policy scores about 280,
 doing nothing about 370. The run stops once solved, or after --steps.
+
+Under mpirun (docs/scale-out.md) the --envs worlds are sharded over the
+ranks (envs.make(..., comm=MPI.COMM_WORLD)); every rank collects its
+shard's rollouts and computes its gradients, which are averaged with an
+allreduce before every optimiser step, as OpenAI Baselines' MPI PPO does.
+The weights start equal (broadcast from rank 0) and so stay equal; the
+observation statistics are reduced over all ranks; rank 0 evaluates, logs
+and writes the curve. The same --envs over more ranks is the same
+algorithm with the same samples per update, only spread out.
 
 Writes (unless --out is empty) OUT.csv, the learning curve as numbers
 (environment steps, wall seconds, mean training-episode return, evaluation
@@ -39,6 +49,68 @@ import manyworlds.envs as envs
 ENV_ID = "cartpole-balance"
 
 
+# -------------------------------------------------------------------- MPI
+
+
+def mpi_comm():
+    """MPI.COMM_WORLD when started by mpirun with more than one rank, else
+    None (mpi4py is imported only then)."""
+    import os
+    if not any(v in os.environ for v in ("OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_SIZE")):
+        return None
+    from mpi4py import MPI
+    return MPI.COMM_WORLD if MPI.COMM_WORLD.Get_size() > 1 else None
+
+
+class Ranks:
+    """The few collective operations the trainer needs; each is the identity
+    without MPI (comm None), so the one-process run is unchanged."""
+
+    def __init__(self, comm):
+        self.comm = comm
+        self.rank = comm.Get_rank() if comm else 0
+        self.size = comm.Get_size() if comm else 1
+
+    def sum(self, array):
+        """Elementwise sum over ranks of a float64 numpy array."""
+        if not self.comm:
+            return array
+        from mpi4py import MPI
+        out = np.empty_like(array)
+        self.comm.Allreduce(np.ascontiguousarray(array), out, op=MPI.SUM)
+        return out
+
+    def broadcast_parameters(self, model):
+        """Rank 0's weights on every rank."""
+        if not self.comm:
+            return
+        for parameter in model.parameters():
+            values = parameter.data.numpy()
+            self.comm.Bcast(values, root=0)
+
+    def average_gradients(self, model):
+        """Every parameter's gradient replaced by its mean over ranks: one
+        allreduce of all gradients flattened together."""
+        if not self.comm:
+            return
+        grads = [p.grad for p in model.parameters()]
+        flat = torch.cat([g.reshape(-1) for g in grads]).numpy().astype(np.float64)
+        flat = self.sum(flat) / self.size
+        offset = 0
+        for g in grads:
+            g.copy_(torch.as_tensor(flat[offset:offset + g.numel()]).reshape(g.shape))
+            offset += g.numel()
+
+    def bcast(self, value):
+        return self.comm.bcast(value, root=0) if self.comm else value
+
+    def gather_lists(self, values):
+        """Every rank's list, concatenated in rank order."""
+        if not self.comm:
+            return list(values)
+        return [v for part in self.comm.allgather(list(values)) for v in part]
+
+
 # ------------------------------------------------------------------- model
 
 
@@ -51,8 +123,15 @@ class RunningNormalizer:
         self.var = np.ones(size, np.float64)
         self.count = 1e-4
 
-    def update(self, batch):
-        batch_mean, batch_var, n = batch.mean(0), batch.var(0), batch.shape[0]
+    def update(self, batch, ranks=None):
+        """Adds a batch [n, size]; with `ranks`, every rank's batch (the
+        same statistics on every rank)."""
+        if ranks is None or ranks.size == 1:
+            batch_mean, batch_var, n = batch.mean(0), batch.var(0), batch.shape[0]
+        else:
+            sums = ranks.sum(np.concatenate([[batch.shape[0]], batch.sum(0)]).astype(np.float64))
+            n, batch_mean = sums[0], sums[1:] / sums[0]
+            batch_var = ranks.sum(((batch - batch_mean) ** 2).sum(0).astype(np.float64)) / n
         delta = batch_mean - self.mean
         total = self.count + n
         self.mean = self.mean + delta * n / total
@@ -125,11 +204,13 @@ def random_policy_return(episodes, seed, threads):
     return float(returns.mean())
 
 
-def train(args, log=print):
+def train(args, log=print, comm=None):
     """Trains until two evaluations in a row reach args.target or args.steps
     environment steps are done. Returns the learning curve: a list of
     (steps, seconds, mean training-episode return or nan, evaluation
-    return or nan)."""
+    return or nan). With comm (mpi4py), the worlds are sharded over its
+    ranks and gradients averaged; every rank returns the same curve."""
+    ranks = Ranks(comm)
     torch.manual_seed(args.seed)
     # One torch thread: the networks are tiny (64 units), so intra-op
     # threads only add synchronisation, and on a busy core torch's spinning
@@ -138,16 +219,17 @@ def train(args, log=print):
     # SAME_STEP: an episode's last observation comes in info["final_obs"],
     # so a time-limit truncation can be bootstrapped with its value.
     env = envs.make(ENV_ID, num_envs=args.envs, threads=args.threads,
-                    autoreset_mode=envs.AutoresetMode.SAME_STEP)
+                    autoreset_mode=envs.AutoresetMode.SAME_STEP, comm=comm)
     n_obs = env.single_observation_space.shape[0]
     n_act = env.single_action_space.shape[0]
     model = ActorCritic(n_obs, n_act)
+    ranks.broadcast_parameters(model)
     optimizer = torch.optim.Adam(model.parameters(), lr=args.lr, eps=1e-5)
     normalizer = RunningNormalizer(n_obs)
 
     obs, _ = env.reset(seed=args.seed)
-    normalizer.update(obs)
-    T, N = args.rollout, args.envs
+    normalizer.update(obs, ranks)
+    T, N = args.rollout, env.num_envs  # N: this rank's worlds
     buf_obs = torch.zeros(T, N, n_obs)
     buf_act = torch.zeros(T, N, n_act)
     buf_logp = torch.zeros(T, N)
@@ -186,7 +268,7 @@ def train(args, log=print):
                 if done.any():
                     finished.extend(episode_return[done].tolist())
                     episode_return[done] = 0.0
-                normalizer.update(obs)
+                normalizer.update(obs, ranks)
             buf_val[T] = model.value(normalizer(obs)).squeeze(-1)
 
             # Generalised advantage estimation (Schulman et al. 2016).
@@ -221,20 +303,26 @@ def train(args, log=print):
                 loss = policy_loss + args.value_coef * value_loss - args.entropy_coef * entropy
                 optimizer.zero_grad()
                 loss.backward()
+                ranks.average_gradients(model)
                 nn.utils.clip_grad_norm_(model.parameters(), 0.5)
                 optimizer.step()
 
-        steps += batch
+        steps += batch * ranks.size
         updates += 1
-        train_return = float(np.mean(finished[-N:])) if finished else math.nan
+        recent = ranks.gather_lists(finished[-N:])
+        train_return = float(np.mean(recent)) if recent else math.nan
         evaluation = math.nan
         if updates % args.eval_every == 0 or steps >= args.steps:
-            evaluation = evaluate(model, normalizer, args.eval_envs, args.seed + 1000 + updates,
-                                  args.threads)
-        seconds = time.perf_counter() - start
+            # Rank 0 evaluates (the weights are the same everywhere).
+            if ranks.rank == 0:
+                evaluation = evaluate(model, normalizer, args.eval_envs,
+                                      args.seed + 1000 + updates, args.threads)
+            evaluation = ranks.bcast(evaluation)
+        seconds = ranks.bcast(time.perf_counter() - start)
         curve.append((steps, seconds, train_return, evaluation))
-        log(f"steps {steps:8d}  {seconds:6.1f} s  training return {train_return:7.1f}"
-            + ("" if math.isnan(evaluation) else f"  evaluation {evaluation:7.1f}"))
+        if ranks.rank == 0:
+            log(f"steps {steps:8d}  {seconds:6.1f} s  training return {train_return:7.1f}"
+                + ("" if math.isnan(evaluation) else f"  evaluation {evaluation:7.1f}"))
         evaluations = [row[3] for row in curve if not math.isnan(row[3])]
         if len(evaluations) >= 2 and min(evaluations[-2:]) >= args.target:
             break  # solved: two evaluations in a row at the target
@@ -309,13 +397,24 @@ def write_curve(curve, out, target, random_return):
     return [out + ".csv", out + ".png"]
 
 
-def main(argv=None):
+def main(argv=None, comm=None):
     args = parse_args(argv)
-    random_return = random_policy_return(args.eval_envs, args.seed, args.threads)
-    print(f"{ENV_ID}: {args.envs} worlds, random policy return {random_return:.1f}")
-    curve = train(args)
+    ranks = Ranks(comm)
+    if args.envs < ranks.size:
+        if ranks.rank == 0:
+            print(f"--envs: {args.envs} worlds for {ranks.size} ranks: at least one each",
+                  file=sys.stderr)
+        return 2
+    random_return = ranks.bcast(random_policy_return(args.eval_envs, args.seed, args.threads)
+                                if ranks.rank == 0 else None)
+    if ranks.rank == 0:
+        where = f" over {ranks.size} MPI ranks" if comm else ""
+        print(f"{ENV_ID}: {args.envs} worlds{where}, random policy return {random_return:.1f}")
+    curve = train(args, comm=comm)
+    if ranks.rank != 0:
+        return 0 if _solved(curve, args.target) else 1
+    solved = _solved(curve, args.target)
     evaluations = [row[3] for row in curve if not math.isnan(row[3])]
-    solved = len(evaluations) >= 2 and min(evaluations[-2:]) >= args.target
     print(f"{'solved' if solved else 'not solved'}: {curve[-1][0]} steps in "
           f"{curve[-1][1]:.1f} s, last evaluation returns "
           + ", ".join(f"{e:.1f}" for e in evaluations[-2:])
@@ -325,5 +424,22 @@ def main(argv=None):
     return 0 if solved else 1
 
 
+def _solved(curve, target):
+    evaluations = [row[3] for row in curve if not math.isnan(row[3])]
+    return len(evaluations) >= 2 and min(evaluations[-2:]) >= target
+
+
 if __name__ == "__main__":
-    sys.exit(main())
+    comm = mpi_comm()
+    try:
+        code = main(comm=comm)
+    except BaseException:
+        # Under mpirun one rank's exception would leave the others waiting
+        # in their next collective call forever: end them all.
+        if comm is not None:
+            import traceback
+            traceback.print_exc()
+            sys.stderr.flush()
+            comm.Abort(1)
+        raise
+    sys.exit(code)

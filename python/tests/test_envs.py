@@ -112,6 +112,74 @@ def test_seeding_reproduces_every_bit(env_id):
     assert not np.array_equal(first[0], other[0])
 
 
+def world_rows(out, rows):
+    """The rows of every per-world output of rollout() (info masks too)."""
+    return [a[rows] for a in out]
+
+
+@pytest.mark.parametrize("env_id", IDS)
+def test_a_world_does_not_depend_on_how_many_worlds_there_are(env_id):
+    # World i's draws come from its own stream (envs/streams.py): keyed by
+    # (seed, global world, episode), so worlds 0-4 of a 5-world and of a
+    # 21-world environment are the same bits, across autoresets (NEXT_STEP
+    # and SAME_STEP) and randomisation. This is what makes a sharded
+    # environment (comm=) equal to one process.
+    options = dict(max_episode_steps=13, mass_scale=(0.8, 1.2), damping=(0.0, 0.1),
+                   gravity_scale=(0.9, 1.1))
+    for mode in ("NEXT_STEP", "SAME_STEP"):
+        small = envs.make(env_id, num_envs=5, autoreset_mode=mode, **options)
+        large = envs.make(env_id, num_envs=21, autoreset_mode=mode, **options)
+        actions = random_actions(large, 5, 40)
+        a = rollout(small, actions[:, :5], seed=3)
+        b = rollout(large, actions, seed=3)
+        assert len(a) == len(b)
+        for x, y in zip(a, world_rows(b, slice(0, 5))):
+            same_bits(x, y)
+        same_bits(small.world_parameters["mass_scale"],
+                  large.world_parameters["mass_scale"][:5])
+
+
+def test_world_streams_are_per_world():
+    from manyworlds.envs import streams
+    worlds = np.array([4, 9, 100, 7])
+    r = streams.WorldRandom(123, worlds, [0, 2, 0, 1], streams.PURPOSE_RESET)
+    first = r.uniform(-1.0, 1.0, (4, 3))
+    subset = r.rows(np.array([False, True, False, True]))
+    normal = subset.standard_normal(2)
+    last = r.random(4)
+    # World 7 (episode 1) alone: the same draws in the same order.
+    alone = streams.WorldRandom(123, [7], [1], streams.PURPOSE_RESET)
+    same_bits(alone.uniform(-1.0, 1.0, (1, 3)), first[3:])
+    same_bits(alone.standard_normal(1), normal[1:])
+    same_bits(alone.random(1), last[3:])
+    # Another episode, purpose or key: other numbers.
+    for key, episode, purpose in ((123, 2, streams.PURPOSE_RESET),
+                                  (123, 1, streams.PURPOSE_RANDOMIZATION),
+                                  (124, 1, streams.PURPOSE_RESET)):
+        other = streams.WorldRandom(key, [7], [episode], purpose).uniform(-1.0, 1.0, (1, 3))
+        assert not np.array_equal(other, first[3:])
+    with pytest.raises(ValueError, match="first dimension must be the 4 worlds"):
+        r.random((3, 2))
+    # Uniform and normal: moments of 200000 draws within 5 standard errors
+    # (mean 1/2 and variance 1/12; mean 0 and variance 1).
+    many = streams.WorldRandom(1, np.arange(200000), np.zeros(200000), streams.PURPOSE_RESET)
+    u, z = many.random(200000), many.standard_normal(200000)
+    se = 1.0 / math.sqrt(200000)
+    assert abs(u.mean() - 0.5) < 5 * se * math.sqrt(1 / 12)
+    assert abs(u.var() - 1 / 12) < 5 * se * 0.0745  # sd of (u - 1/2)^2 is 0.0745
+    assert abs(z.mean()) < 5 * se and abs(z.var() - 1.0) < 5 * se * math.sqrt(2)
+    assert u.min() >= 0.0 and u.max() < 1.0
+
+
+def test_shard_of_worlds_binding():
+    import manyworlds
+    assert manyworlds.shard_of_worlds(100, 0, 3) == (0, 32)
+    assert manyworlds.shard_of_worlds(100, 2, 3) == (64, 36)
+    assert manyworlds.shard_of_worlds(5, 1, 2) == (2, 3)  # fewer blocks than ranks
+    with pytest.raises(ValueError, match="every rank needs at least one world"):
+        manyworlds.shard_of_worlds(2, 0, 3)
+
+
 def make_short(mode, steps=3, env_id="cartpole-balance"):
     return envs.make(env_id, num_envs=N, max_episode_steps=steps, autoreset_mode=mode)
 

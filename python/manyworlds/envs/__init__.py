@@ -20,12 +20,13 @@ from ._compat import HAVE_GYMNASIUM, AutoresetMode, Box, Discrete, MultiDiscrete
 from .arms import RagdollPoseEnv, ReacherEnv
 from .control import AcrobotSwingupEnv, CartpoleEnv, PendulumSwingupEnv, cartpole_reward
 from .rewards import tolerance
-from .vector import RANDOMIZATION_OPTIONS, ManyWorldsVectorEnv
+from .vector import RANDOMIZATION_OPTIONS, ManyWorldsVectorEnv, RankError
 
 __all__ = [
     "make", "ids", "AutoresetMode", "HAVE_GYMNASIUM", "Box", "Discrete", "MultiDiscrete",
     "ManyWorldsVectorEnv", "CartpoleEnv", "PendulumSwingupEnv", "AcrobotSwingupEnv",
     "ReacherEnv", "RagdollPoseEnv", "tolerance", "cartpole_reward", "RANDOMIZATION_OPTIONS",
+    "RankError",
 ]
 
 # id -> (class, fixed keyword arguments)
@@ -49,7 +50,8 @@ def make(id, num_envs=1, **options):  # noqa: A002 - Gymnasium's name
 
     options: autoreset_mode (AutoresetMode, its name or value; default
     NEXT_STEP), max_episode_steps (default: the task's), threads (0: every
-    core), and the randomisation ranges mass_scale, damping, gravity_scale
+    core), comm (an mpi4py communicator: the worlds sharded over its ranks,
+    docs/scale-out.md), and the randomisation ranges mass_scale, damping, gravity_scale
     as (low, high) pairs (RANDOMIZATION_OPTIONS). Unknown ids raise
     ValueError listing the valid ones; unknown options TypeError.
     """

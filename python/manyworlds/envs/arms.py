@@ -37,9 +37,9 @@ class ReacherEnv(ManyWorldsVectorEnv):
     def __init__(self, num_envs, **options):
         self.step_settings = _core.StepSettings(delta_time=0.02, substeps=2)
         super().__init__(num_envs, **options)
-        self._upper_torque = np.zeros((num_envs, 3), np.float32)
-        self._lower_torque = np.zeros((num_envs, 3), np.float32)
-        self.target = np.zeros((num_envs, 2), np.float32)
+        self._upper_torque = np.zeros((self.num_envs, 3), np.float32)
+        self._lower_torque = np.zeros((self.num_envs, 3), np.float32)
+        self.target = np.zeros((self.num_envs, 2), np.float32)
 
     def _make_scene(self):
         scene = _core.Scene()
@@ -78,12 +78,13 @@ class ReacherEnv(ManyWorldsVectorEnv):
 
     def _on_reset(self, idx, rng):
         # Reacher's goal: uniform in [-0.2, 0.2]^2 until inside the disc,
-        # done for all at once (redraw the rejected ones).
+        # done for all at once (the rejected worlds redraw from their own
+        # streams: rng.rows).
         goal = rng.uniform(-self.TARGET_RADIUS, self.TARGET_RADIUS, (len(idx), 2))
         outside = np.hypot(goal[:, 0], goal[:, 1]) >= self.TARGET_RADIUS
         while outside.any():
-            goal[outside] = rng.uniform(-self.TARGET_RADIUS, self.TARGET_RADIUS,
-                                        (int(outside.sum()), 2))
+            goal[outside] = rng.rows(outside).uniform(-self.TARGET_RADIUS, self.TARGET_RADIUS,
+                                                      (int(outside.sum()), 2))
             outside = np.hypot(goal[:, 0], goal[:, 1]) >= self.TARGET_RADIUS
         self.target[idx] = goal
 
@@ -147,12 +148,12 @@ class RagdollPoseEnv(ManyWorldsVectorEnv):
         constraints = self.scene.constraints
         self.limits = np.array([[constraints[c].limits_min, constraints[c].limits_max]
                                 for c in self.MOTORS], np.float32)
-        self.target_pose = np.zeros((num_envs, len(self.MOTORS)), np.float32)
+        self.target_pose = np.zeros((self.num_envs, len(self.MOTORS)), np.float32)
         # Column of each motor's hinge angle in the joint-coordinate array.
         offsets = np.cumsum([0] + [self.batch.joint_coordinate_count(c)
                                    for c in range(self.batch.num_constraints)])
         self._angle_columns = np.array([offsets[c] for c in self.MOTORS])
-        self._targets = np.zeros((len(self.MOTORS), num_envs), np.float32)
+        self._targets = np.zeros((len(self.MOTORS), self.num_envs), np.float32)
 
     def _make_scene(self):
         return _core.make_scene("ragdoll")

@@ -73,7 +73,7 @@ class CartpoleEnv(ManyWorldsVectorEnv):
         self.env_id = "cartpole-swingup" if swing_up else "cartpole-balance"
         self.step_settings = _core.StepSettings(delta_time=0.01, substeps=1)
         super().__init__(num_envs, **options)
-        self._forces = np.zeros((num_envs, 3), np.float32)
+        self._forces = np.zeros((self.num_envs, 3), np.float32)
 
     def _make_scene(self):
         scene = _core.Scene()
@@ -168,7 +168,7 @@ class PendulumSwingupEnv(ManyWorldsVectorEnv):
     def __init__(self, num_envs, **options):
         self.step_settings = _core.StepSettings(delta_time=0.02, substeps=1)
         super().__init__(num_envs, **options)
-        self._torque = np.zeros((num_envs, 3), np.float32)
+        self._torque = np.zeros((self.num_envs, 3), np.float32)
 
     def _make_scene(self):
         scene = _core.Scene()
@@ -242,8 +242,8 @@ class AcrobotSwingupEnv(ManyWorldsVectorEnv):
     def __init__(self, num_envs, **options):
         self.step_settings = _core.StepSettings(delta_time=0.01, substeps=1)
         super().__init__(num_envs, **options)
-        self._upper_torque = np.zeros((num_envs, 3), np.float32)
-        self._lower_torque = np.zeros((num_envs, 3), np.float32)
+        self._upper_torque = np.zeros((self.num_envs, 3), np.float32)
+        self._lower_torque = np.zeros((self.num_envs, 3), np.float32)
 
     def _make_scene(self):
         scene = _core.Scene()

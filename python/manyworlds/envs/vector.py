@@ -10,8 +10,17 @@ expressions over [num_envs] arrays. No per-world Python loop anywhere.
 import numpy as np
 
 from .. import _core
-from . import _compat
+from . import _compat, streams
 from ._compat import AutoresetMode
+
+
+class RankError(RuntimeError):
+    """A refusal on some MPI rank of a sharded environment, raised on every
+    rank (docs/scale-out.md). `rank` is the lowest rank that refused."""
+
+    def __init__(self, rank, message):
+        super().__init__(f"rank {rank}: {message}")
+        self.rank = rank
 
 # The per-world randomisation options (make(..., name=(low, high)) or
 # reset(options={name: (low, high)})): drawn uniformly per world at every
@@ -65,7 +74,13 @@ class ManyWorldsVectorEnv(_compat.VectorEnvBase):
     _actions(actions) (the step's action keywords, e.g. {"body_forces":
     {body: [W, 3] array}}, written by the step itself: see Batch.step),
     _observe() and _reward(actions); optionally _terminated() and
-    _on_reset(mask, rng).
+    _on_reset(idx, rng). `rng` is a streams.WorldRandom over the worlds idx
+    (Generator's draw methods, first dimension the worlds).
+
+    With comm (an mpi4py communicator), the num_envs worlds are sharded over
+    its ranks: this rank's environment holds the worlds [world_offset,
+    world_offset + num_envs) of global_num_envs, and each world behaves
+    exactly as in one process (docs/scale-out.md).
     """
 
     env_id = None
@@ -74,14 +89,21 @@ class ManyWorldsVectorEnv(_compat.VectorEnvBase):
 
     def __init__(self, num_envs, *, autoreset_mode=AutoresetMode.NEXT_STEP,
                  max_episode_steps=None, threads=0, mass_scale=None, damping=None,
-                 gravity_scale=None, **unknown):
+                 gravity_scale=None, comm=None, **unknown):
         if unknown:
             raise TypeError(f"{self.env_id}: unknown option(s) {sorted(unknown)}; accepted: "
-                            "num_envs, autoreset_mode, max_episode_steps, threads, "
+                            "num_envs, autoreset_mode, max_episode_steps, threads, comm, "
                             + ", ".join(RANDOMIZATION_OPTIONS))
         num_envs = int(num_envs)
         if num_envs < 1:
             raise ValueError(f"num_envs: expected >= 1, got {num_envs}")
+        # Sharding: the global worlds this rank owns (the C++ ShardOfWorlds).
+        self.comm = comm
+        self.global_num_envs = num_envs
+        self.world_offset = 0
+        if comm is not None:
+            self.world_offset, num_envs = _core.shard_of_worlds(
+                num_envs, comm.Get_rank(), comm.Get_size())
         self.num_envs = num_envs
         self.metadata = dict(type(self).metadata)
         self.metadata["autoreset_mode"] = _compat.autoreset_mode(autoreset_mode)
@@ -131,6 +153,11 @@ class ManyWorldsVectorEnv(_compat.VectorEnvBase):
         self._needs_reset = True  # reset() must come first, as in Gymnasium
         self._np_random = None
         self._np_random_seed = None
+        # The key of every world's random stream (streams.py) and how many
+        # times each world was reset since it was seeded.
+        self._stream_key = None
+        self._episodes = np.zeros(num_envs, np.uint64)
+        self._global_worlds = self.world_offset + np.arange(num_envs, dtype=np.uint64)
 
     # ------------------------------------------------------------ protocol
 
@@ -140,16 +167,31 @@ class ManyWorldsVectorEnv(_compat.VectorEnvBase):
 
     def reset(self, *, seed=None, options=None):
         """(obs [num_envs, ...], info). seed: an int (or list of ints) seeds
-        the environment's generator; None keeps it (first reset: from
-        entropy). options: {"reset_mask": bool [num_envs]} resets only
-        those worlds (the others keep their observation), and any
-        randomisation option overrides make()'s for this reset."""
-        options = dict(options or {})
+        every world's random stream (episode numbers start again); None
+        keeps them (first reset: from entropy, rank 0's under MPI).
+        options: {"reset_mask": bool [num_envs]} resets only those worlds
+        (the others keep their observation), and any randomisation option
+        overrides make()'s for this reset. Collective under MPI."""
+        mask, overrides = self._agreed(lambda: self._reset_arguments(options))
         if seed is not None:
             self._np_random = np.random.default_rng(seed)
             self._np_random_seed = seed if isinstance(seed, int) else None
-        elif self._np_random is None:
-            self._np_random = np.random.default_rng()
+            self._stream_key = streams.key_of(seed)
+            self._episodes[:] = 0
+        elif self._stream_key is None:
+            # From entropy; every rank must use the same key.
+            key = streams.key_of(None)
+            self._stream_key = key if self.comm is None else self.comm.bcast(key, root=0)
+            self._np_random = np.random.default_rng(self._stream_key)
+        self._reset_worlds(mask, overrides)
+        self._autoreset_envs[mask] = False
+        self._needs_reset = False
+        return self._observe(), {}
+
+    def _reset_arguments(self, options):
+        """(reset mask, randomisation overrides) of reset's options, or
+        ValueError naming what is wrong."""
+        options = dict(options or {})
         mask = options.pop("reset_mask", None)
         if mask is None:
             mask = np.ones(self.num_envs, np.bool_)
@@ -159,7 +201,7 @@ class ManyWorldsVectorEnv(_compat.VectorEnvBase):
                 raise ValueError(f"reset_mask: expected a numpy bool array of shape "
                                  f"({self.num_envs},), got {type(mask).__name__} "
                                  f"{getattr(mask, 'dtype', '')} {getattr(mask, 'shape', '')}")
-            if not mask.any():
+            if not mask.any() and self.comm is None:
                 raise ValueError("reset_mask: selects no environment")
             if self._needs_reset and not mask.all():
                 raise ValueError("reset_mask: the first reset must reset every environment")
@@ -170,22 +212,45 @@ class ManyWorldsVectorEnv(_compat.VectorEnvBase):
         if options:
             raise ValueError(f"options: unknown key(s) {sorted(options)}; accepted: reset_mask, "
                              + ", ".join(RANDOMIZATION_OPTIONS))
-        self._reset_worlds(mask, overrides)
-        self._autoreset_envs[mask] = False
-        self._needs_reset = False
-        return self._observe(), {}
+        return mask, overrides
+
+    def _agreed(self, check):
+        """check()'s result. Sharded, every rank learns whether any rank's
+        check raised (one allreduce), and then every rank raises RankError
+        with the lowest failing rank's message: a bad input on one rank
+        never leaves the others waiting for it in a later collective call."""
+        if self.comm is None:
+            return check()
+        try:
+            result, error = check(), None
+        except Exception as e:  # noqa: BLE001 - reported on every rank
+            result, error = None, e
+        from mpi4py import MPI
+        rank = self.comm.Get_rank()
+        first = self.comm.allreduce(rank if error is not None else self.comm.Get_size(),
+                                    op=MPI.MIN)
+        if first == self.comm.Get_size():
+            return result
+        message = self.comm.bcast(f"{type(error).__name__}: {error}" if rank == first else None,
+                                  root=first)
+        raise RankError(first, message) from error
 
     def step(self, actions):
         """(obs, reward, terminated, truncated, info), all [num_envs, ...]."""
         if self._needs_reset:
             raise RuntimeError(f"{self.env_id}: call reset() before step()")
         mode = self.metadata["autoreset_mode"]
-        actions = self._checked_actions(actions)
-        if mode == AutoresetMode.DISABLED and self._autoreset_envs.any():
-            raise AssertionError(
-                "autoreset_mode DISABLED: environments "
-                f"{np.flatnonzero(self._autoreset_envs).tolist()} terminated or truncated and "
-                "were not reset: call reset(options={'reset_mask': mask}) first")
+
+        def check():
+            checked = self._checked_actions(actions)
+            if mode == AutoresetMode.DISABLED and self._autoreset_envs.any():
+                raise AssertionError(
+                    "autoreset_mode DISABLED: environments "
+                    f"{np.flatnonzero(self._autoreset_envs).tolist()} terminated or truncated "
+                    "and were not reset: call reset(options={'reset_mask': mask}) first")
+            return checked
+
+        actions = self._agreed(check)
         # NEXT_STEP: the worlds done last step are reset now; their action is
         # ignored (they step with zeros, then are overwritten by the reset).
         # The reset is done by the step itself, after each block's step and
@@ -272,36 +337,56 @@ class ManyWorldsVectorEnv(_compat.VectorEnvBase):
 
     def _reset_worlds(self, mask, overrides):
         """Resets the worlds where mask is True: initial states and task
-        variables drawn from the generator, randomisation re-applied."""
+        variables drawn from their streams, randomisation re-applied."""
         states = self._draw_reset(mask)
-        self.batch.reset_to(mask, states)
+        if mask.any():
+            self.batch.reset_to(mask, states)
         self._finish_reset(mask, overrides)
         self._read_state()
+
+    def _world_random(self, idx, purpose):
+        """The random streams of the worlds idx for this reset (streams.py)."""
+        return streams.WorldRandom(self._stream_key, self._global_worlds[idx],
+                                   self._episodes[idx], purpose)
 
     def _draw_reset(self, mask):
         """The first half of a reset of the worlds where mask is True: their
         initial body states [num_envs, bodies, 13] (other rows unread) and
-        task variables, drawn from the generator."""
-        rng = self.np_random
+        task variables, drawn from their streams."""
         idx = np.flatnonzero(mask)
         states = np.empty((self.num_envs, self.batch.num_bodies, 13), np.float32)
         states[:] = self._initial_state
-        states[idx] = self._reset_states(idx, rng)
-        self._on_reset(idx, rng)
+        if len(idx):
+            rng = self._world_random(idx, streams.PURPOSE_RESET)
+            states[idx] = self._reset_states(idx, rng)
+            self._on_reset(idx, rng)
         return states
 
     def _finish_reset(self, mask, overrides):
         """The second half, once the batch has reset the worlds: per-world
-        randomisation (a reset restored the scene's parameters), episode clocks."""
-        self._randomize(mask, mask.astype(np.uint8), self.np_random, overrides)
+        randomisation (a reset restored the scene's parameters), episode
+        clocks and numbers."""
+        idx = np.flatnonzero(mask)
+        if len(idx):
+            self._randomize(mask, idx, overrides)
         self._elapsed[mask] = 0
+        self._episodes[mask] += np.uint64(1)
 
-    def _randomize(self, mask, mask_u8, rng, overrides):
+    def _randomize(self, mask, idx, overrides):
         ranges = {**self.randomization, **overrides}
+        rng = self._world_random(idx, streams.PURPOSE_RANDOMIZATION)
+        mask_u8 = mask.astype(np.uint8)
         n, nb = self.num_envs, len(self._dynamic)
+
+        def per_world(values, shape):
+            """[num_envs, ...] with the drawn rows at idx (others unread)."""
+            full = np.ones((n, *shape), np.float32)
+            full[idx] = values
+            return full
+
         mass = ranges["mass_scale"]
         if mass is not None:
-            scale = rng.uniform(mass[0], mass[1], (n, nb)).astype(np.float32)
+            scale = per_world(rng.uniform(mass[0], mass[1], (len(idx), nb)), (nb,))
             self.world_parameters["mass_scale"][mask] = scale[mask]
             for j, body in enumerate(self._dynamic):
                 self.batch.set_mass_properties(
@@ -312,7 +397,7 @@ class ManyWorldsVectorEnv(_compat.VectorEnvBase):
             self.world_parameters["mass_scale"][mask] = 1.0
         damping = ranges["damping"]
         if damping is not None:
-            values = rng.uniform(damping[0], damping[1], (n, nb)).astype(np.float32)
+            values = per_world(rng.uniform(damping[0], damping[1], (len(idx), nb)), (nb,))
             self.world_parameters["damping"][mask] = values[mask]
             for j, body in enumerate(self._dynamic):
                 column = np.ascontiguousarray(values[:, j])
@@ -321,7 +406,7 @@ class ManyWorldsVectorEnv(_compat.VectorEnvBase):
             self.world_parameters["damping"][mask] = 0.0
         gravity = ranges["gravity_scale"]
         if gravity is not None:
-            scale = rng.uniform(gravity[0], gravity[1], n).astype(np.float32)
+            scale = per_world(rng.uniform(gravity[0], gravity[1], len(idx)), ())
             self.world_parameters["gravity_scale"][mask] = scale[mask]
             for j, body in enumerate(self._dynamic):
                 self.batch.set_gravity_factor(
@@ -360,5 +445,8 @@ class ManyWorldsVectorEnv(_compat.VectorEnvBase):
         return np.zeros(self.num_envs, np.bool_)
 
     def __repr__(self):
+        shard = "" if self.comm is None else (
+            f", worlds [{self.world_offset}, {self.world_offset + self.num_envs}) of "
+            f"{self.global_num_envs} on rank {self.comm.Get_rank()}")
         return (f"{type(self).__name__}({self.env_id!r}, num_envs={self.num_envs}, "
-                f"autoreset_mode={self.autoreset_mode.name})")
+                f"autoreset_mode={self.autoreset_mode.name}{shard})")
