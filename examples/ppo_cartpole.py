@@ -224,6 +224,10 @@ def train(args, log=print, comm=None):
     n_act = env.single_action_space.shape[0]
     model = ActorCritic(n_obs, n_act)
     ranks.broadcast_parameters(model)
+    if ranks.size > 1:
+        # Equal weights, but each rank its own action noise and minibatch
+        # order: with one seed, every rank's worlds would explore alike.
+        torch.manual_seed(args.seed + 7919 * ranks.rank)
     optimizer = torch.optim.Adam(model.parameters(), lr=args.lr, eps=1e-5)
     normalizer = RunningNormalizer(n_obs)
 

@@ -6,7 +6,8 @@ Seed 1, at most 200k environment steps over both ranks (about 25 s here).
 As in test_ppo_cartpole.py, PPO must reach twice the random policy's
 return (~275, so ~550): a broken gradient average (ranks drifting apart),
 a wrong shard or unreduced observation statistics stay near the random
-return and fail it. The run measured 656 then 748 at 200k steps.
+return and fail it. Measured: solved (930.7 then 970.7) at 147k steps in
+15.5 s.
 """
 
 import os
