@@ -27,7 +27,7 @@ from mpi4py import MPI
 
 import manyworlds
 import manyworlds.envs as envs
-from manyworlds.envs.vector import RankError
+from manyworlds.envs import RankError
 
 COMM = MPI.COMM_WORLD
 RANK, RANKS = COMM.Get_rank(), COMM.Get_size()

@@ -20,7 +20,8 @@ from ._compat import HAVE_GYMNASIUM, AutoresetMode, Box, Discrete, MultiDiscrete
 from .arms import RagdollPoseEnv, ReacherEnv
 from .control import AcrobotSwingupEnv, CartpoleEnv, PendulumSwingupEnv, cartpole_reward
 from .rewards import tolerance
-from .vector import RANDOMIZATION_OPTIONS, ManyWorldsVectorEnv, RankError
+from ..sharding import RankError
+from .vector import RANDOMIZATION_OPTIONS, ManyWorldsVectorEnv
 
 __all__ = [
     "make", "ids", "AutoresetMode", "HAVE_GYMNASIUM", "Box", "Discrete", "MultiDiscrete",

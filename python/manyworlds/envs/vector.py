@@ -9,18 +9,9 @@ expressions over [num_envs] arrays. No per-world Python loop anywhere.
 
 import numpy as np
 
-from .. import _core
+from .. import _core, sharding
 from . import _compat, streams
 from ._compat import AutoresetMode
-
-
-class RankError(RuntimeError):
-    """A refusal on some MPI rank of a sharded environment, raised on every
-    rank (docs/scale-out.md). `rank` is the lowest rank that refused."""
-
-    def __init__(self, rank, message):
-        super().__init__(f"rank {rank}: {message}")
-        self.rank = rank
 
 # The per-world randomisation options (make(..., name=(low, high)) or
 # reset(options={name: (low, high)})): drawn uniformly per world at every
@@ -216,24 +207,10 @@ class ManyWorldsVectorEnv(_compat.VectorEnvBase):
 
     def _agreed(self, check):
         """check()'s result. Sharded, every rank learns whether any rank's
-        check raised (one allreduce), and then every rank raises RankError
-        with the lowest failing rank's message: a bad input on one rank
-        never leaves the others waiting for it in a later collective call."""
-        if self.comm is None:
-            return check()
-        try:
-            result, error = check(), None
-        except Exception as e:  # noqa: BLE001 - reported on every rank
-            result, error = None, e
-        from mpi4py import MPI
-        rank = self.comm.Get_rank()
-        first = self.comm.allreduce(rank if error is not None else self.comm.Get_size(),
-                                    op=MPI.MIN)
-        if first == self.comm.Get_size():
-            return result
-        message = self.comm.bcast(f"{type(error).__name__}: {error}" if rank == first else None,
-                                  root=first)
-        raise RankError(first, message) from error
+        check raised (sharding.agreed: one allreduce), and then every rank
+        raises RankError with the lowest failing rank's message: a bad input
+        on one rank never leaves the others waiting in a later collective."""
+        return check() if self.comm is None else sharding.agreed(self.comm, check)
 
     def step(self, actions):
         """(obs, reward, terminated, truncated, info), all [num_envs, ...]."""
