@@ -76,6 +76,12 @@ void Batch::Impl::FinishBlock(std::size_t block, const BlockIo& io, bool stepped
   if (io.joints_out != nullptr) ReadJointCoordinatesOfBlock(block, io.joints, io.joints_out);
 }
 
+void Batch::CheckStep(const StepSettings& settings, const StepIo& io) const {
+  // In Step's order: io first (CheckedBlockIo), then the settings (Impl::Step).
+  impl().CheckedBlockIo(io);
+  CheckStepSettings(settings);
+}
+
 bool Batch::Step(const StepSettings& settings, const StepIo& io, std::stop_token stop) {
   Impl& batch = impl();
   const Impl::Exclusive exclusive(batch, "Step");

@@ -26,7 +26,7 @@ WorldShard ShardOfWorlds(std::size_t total_worlds, int rank, int ranks) {
   std::size_t first = 0, end = 0;
   if (blocks >= n) {
     // Whole blocks: only the last rank may step a partly empty block.
-    // (blocks < 2^22 and ranks < 2^31: the products fit 64 bits.)
+    // (The products fit 64 bits below 2^37 worlds, far past any batch.)
     first = std::min(blocks * r / n * kLaneWidth, total_worlds);
     end = std::min(blocks * (r + 1) / n * kLaneWidth, total_worlds);
   } else {

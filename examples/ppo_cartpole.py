@@ -44,6 +44,7 @@ import numpy as np
 import torch
 from torch import nn
 
+import manyworlds
 import manyworlds.envs as envs
 
 ENV_ID = "cartpole-balance"
@@ -88,14 +89,18 @@ class Ranks:
             values = parameter.data.numpy()
             self.comm.Bcast(values, root=0)
 
-    def average_gradients(self, model):
-        """Every parameter's gradient replaced by its mean over ranks: one
-        allreduce of all gradients flattened together."""
+    def average_gradients(self, model, samples):
+        """Every parameter's gradient replaced by the mean over ranks
+        weighted by each rank's `samples` (its minibatch's size): the
+        gradient of the loss over every rank's minibatch at once, also when
+        shards differ in size. One allreduce of all gradients flattened
+        together, the weight last."""
         if not self.comm:
             return
         grads = [p.grad for p in model.parameters()]
         flat = torch.cat([g.reshape(-1) for g in grads]).numpy().astype(np.float64)
-        flat = self.sum(flat) / self.size
+        flat = self.sum(np.concatenate([flat * samples, [samples]]))
+        flat = flat[:-1] / flat[-1]
         offset = 0
         for g in grads:
             g.copy_(torch.as_tensor(flat[offset:offset + g.numel()]).reshape(g.shape))
@@ -289,11 +294,10 @@ def train(args, log=print, comm=None):
         flat_logp, flat_adv = buf_logp.reshape(-1), advantages.reshape(-1)
         flat_ret = returns.reshape(-1)
         batch = T * N
-        minibatch = batch // args.minibatches
         for _ in range(args.epochs):
-            order = torch.randperm(batch)
-            for first in range(0, batch, minibatch):
-                idx = order[first:first + minibatch]
+            # Exactly args.minibatches minibatches on every rank, whatever
+            # its shard's size: each one ends in a collective gradient average.
+            for idx in torch.tensor_split(torch.randperm(batch), args.minibatches):
                 dist = model.distribution(flat_obs[idx])
                 logp = dist.log_prob(flat_act[idx]).sum(-1)
                 ratio = (logp - flat_logp[idx]).exp()
@@ -307,11 +311,11 @@ def train(args, log=print, comm=None):
                 loss = policy_loss + args.value_coef * value_loss - args.entropy_coef * entropy
                 optimizer.zero_grad()
                 loss.backward()
-                ranks.average_gradients(model)
+                ranks.average_gradients(model, len(idx))
                 nn.utils.clip_grad_norm_(model.parameters(), 0.5)
                 optimizer.step()
 
-        steps += batch * ranks.size
+        steps += T * env.global_num_envs  # every rank's worlds
         updates += 1
         recent = ranks.gather_lists(finished[-N:])
         train_return = float(np.mean(recent)) if recent else math.nan
@@ -404,10 +408,14 @@ def write_curve(curve, out, target, random_return):
 def main(argv=None, comm=None):
     args = parse_args(argv)
     ranks = Ranks(comm)
-    if args.envs < ranks.size:
+    # Every rank needs a world, and samples for every minibatch.
+    smallest = min(manyworlds.shard_of_worlds(args.envs, r, ranks.size)[1]
+                   for r in range(ranks.size)) if args.envs >= ranks.size else 0
+    if smallest * args.rollout < args.minibatches:
         if ranks.rank == 0:
-            print(f"--envs: {args.envs} worlds for {ranks.size} ranks: at least one each",
-                  file=sys.stderr)
+            print(f"--envs {args.envs} over {ranks.size} ranks: the smallest shard has "
+                  f"{smallest} worlds, {smallest * args.rollout} samples per update, fewer than "
+                  f"--minibatches {args.minibatches}", file=sys.stderr)
         return 2
     random_return = ranks.bcast(random_policy_return(args.eval_envs, args.seed, args.threads)
                                 if ranks.rank == 0 else None)
@@ -437,6 +445,8 @@ if __name__ == "__main__":
     comm = mpi_comm()
     try:
         code = main(comm=comm)
+    except SystemExit:
+        raise  # argparse's usage errors: the same on every rank, exit code 2
     except BaseException:
         # Under mpirun one rank's exception would leave the others waiting
         # in their next collective call forever: end them all.

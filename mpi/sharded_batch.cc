@@ -3,9 +3,11 @@
 // No step sends a world's data anywhere: a rank steps its own shard exactly
 // as a one-process Batch steps the same worlds (a world's result never
 // depends on its lane, block or neighbours), so the only messages are the
-// refusal checks (one allreduce of an int per collective call) and what the
-// caller gathers. Gathers use MPI_Gatherv with one derived datatype per
-// world, so counts stay in worlds (below 2^26) and never overflow MPI's int.
+// refusal checks (one allreduce of an int per collective call; a gather
+// also checks that every rank passed rank 0's arguments, one broadcast) and
+// what the caller gathers. Gathers use MPI_Gatherv with one derived
+// datatype per world, so counts are in worlds, not bytes or floats: MPI's
+// int holds them up to 2^31 worlds per rank.
 
 #include "manyworlds/sharded_batch.h"
 
@@ -111,8 +113,11 @@ ShardedBatch::ShardedBatch(MPI_Comm comm, const Scene& scene, std::size_t total_
 
 ShardedBatch::~ShardedBatch() {
   // MPI_Comm_free is collective in principle but completes locally in
-  // every implementation for a communicator with nothing pending.
-  if (comm_ != MPI_COMM_NULL) MPI_Comm_free(&comm_);
+  // every implementation for a communicator with nothing pending. After
+  // MPI_Finalize (a caller's mistake) no MPI call is allowed: leave it.
+  int finalized = 0;
+  MPI_Finalized(&finalized);
+  if (comm_ != MPI_COMM_NULL && !finalized) MPI_Comm_free(&comm_);
 }
 
 WorldShard ShardedBatch::shard_of(int rank) const {
@@ -147,15 +152,39 @@ void ShardedBatch::AllOrNone(const std::function<void(Batch&)>& fn) {
   AllRanksOrNone(comm_, [&] { fn(*local_); });
 }
 
-void ShardedBatch::Step(const StepSettings& settings) {
-  AllOrNone([&](Batch& batch) { batch.Step(settings); });
-}
+void ShardedBatch::Step(const StepSettings& settings) { Step(settings, StepIo{}); }
 
 void ShardedBatch::Step(const StepSettings& settings, const StepIo& io) {
-  AllOrNone([&](Batch& batch) { batch.Step(settings, io); });
+  // Every rank's arguments checked before any rank steps: a refusal leaves
+  // every shard where it was, so the worlds stay those of one process.
+  AllOrNone([&](Batch& batch) { batch.CheckStep(settings, io); });
+  local_->Step(settings, io);
+}
+
+void ShardedBatch::CheckSameAsRankZero(const char* call, std::vector<std::uint64_t> values,
+                                       const std::vector<const char*>& names, int root,
+                                       const std::function<void()>& local_check) const {
+  std::vector<std::uint64_t> rank_zeros = values;
+  MPI_Bcast(rank_zeros.data(), int(rank_zeros.size()), MPI_UINT64_T, 0, comm_);
+  AllRanksOrNone(comm_, [&] {
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      if (values[i] != rank_zeros[i]) {
+        throw std::invalid_argument(std::string(call) + ": " + names[i] + " " +
+                                    std::to_string(values[i]) + " differs from rank 0's " +
+                                    std::to_string(rank_zeros[i]) +
+                                    " (every rank must pass the same)");
+      }
+    }
+    if (root < 0 || root >= ranks_) {
+      throw std::invalid_argument(std::string(call) + ": root " + std::to_string(root) +
+                                  " is not one of the " + std::to_string(ranks_) + " ranks");
+    }
+    local_check();
+  });
 }
 
 HealthCounts ShardedBatch::ReduceHealth(int root) const {
+  CheckSameAsRankZero("ReduceHealth", {std::uint64_t(root)}, {"root"}, root, [] {});
   std::uint64_t local[6] = {0, 0, 0, 0, 0, 0};
   for (const std::uint8_t bits : local_->WorldHealth()) {
     local[0] += bits != 0;
@@ -168,6 +197,7 @@ HealthCounts ShardedBatch::ReduceHealth(int root) const {
 }
 
 std::vector<std::uint8_t> ShardedBatch::GatherHealth(int root) const {
+  CheckSameAsRankZero("GatherHealth", {std::uint64_t(root)}, {"root"}, root, [] {});
   const std::vector<int> counts = WorldsPerRank();
   std::vector<std::uint8_t> out(rank_ == root ? total_worlds_ : 0);
   const std::span<const std::uint8_t> health = local_->WorldHealth();
@@ -178,7 +208,8 @@ std::vector<std::uint8_t> ShardedBatch::GatherHealth(int root) const {
 
 std::vector<float> ShardedBatch::GatherPerWorld(std::span<const float> local_values,
                                                 std::size_t per_world, int root) const {
-  AllRanksOrNone(comm_, [&] {
+  CheckSameAsRankZero("GatherPerWorld", {per_world, std::uint64_t(root)}, {"per_world", "root"},
+                      root, [&] {
     if (per_world > std::size_t(INT_MAX) || local_values.size() != shard_.count * per_world) {
       throw std::invalid_argument("GatherPerWorld: expected " + std::to_string(shard_.count) +
                                   " worlds x " + std::to_string(per_world) + " values, got " +
@@ -199,7 +230,12 @@ std::vector<float> ShardedBatch::GatherStates(std::span<const std::size_t> globa
   // The owned worlds of the list, in list order, read on their rank.
   std::vector<float> mine;
   std::vector<int> owners(global_worlds.size());
-  AllRanksOrNone(comm_, [&] {
+  // The same list on every rank, or the ranks would send what root does not
+  // expect: its length and a hash of it against rank 0's.
+  std::uint64_t hash = 14695981039346656037ull;  // FNV-1a over the indices
+  for (const std::size_t world : global_worlds) hash = (hash ^ world) * 1099511628211ull;
+  CheckSameAsRankZero("GatherStates", {global_worlds.size(), hash, std::uint64_t(root)},
+                      {"the list's length", "the list's hash", "root"}, root, [&] {
     for (std::size_t i = 0; i < global_worlds.size(); ++i) {
       owners[i] = owner(global_worlds[i]);
     }

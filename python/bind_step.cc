@@ -76,74 +76,102 @@ void AddActions(StepActions& out, const Batch& batch, py::handle keyword, const 
   }
 }
 
+// step(...) and check_step(...): the arguments checked and turned into a
+// StepIo, then the step, or (check_only) only Batch::CheckStep.
+void StepOrCheck(Batch& batch, const StepSettings& settings, py::handle body_forces,
+                 py::handle body_torques, py::handle target_velocities,
+                 py::handle target_positions, py::handle target_orientations,
+                 py::handle target_angular_velocities, py::handle target_translations,
+                 py::handle target_linear_velocities, py::handle reset_mask,
+                 py::handle reset_states, py::handle state_out, py::handle joints_out,
+                 bool check_only) {
+  // A copy: another Python thread may change the settings object
+  // while this one steps without the GIL.
+  const StepSettings copy = settings;
+  const auto worlds = static_cast<py::ssize_t>(batch.world_count());
+  const auto bodies = static_cast<py::ssize_t>(batch.body_count());
+  // Every argument checked (and refused by name) before the step;
+  // the C++ call checks the actions against the scene (a static
+  // body, a constraint without a motor) before writing any.
+  StepActions actions;
+  const struct {
+    py::handle values;
+    const char* name;
+    ActionKind kind;
+  } keywords[] = {
+      {body_forces, "body_forces", ActionKind::kForce},
+      {body_torques, "body_torques", ActionKind::kTorque},
+      {target_velocities, "target_velocities", ActionKind::kTargetVelocity},
+      {target_positions, "target_positions", ActionKind::kTargetPosition},
+      {target_orientations, "target_orientations", ActionKind::kTargetOrientation},
+      {target_angular_velocities, "target_angular_velocities",
+       ActionKind::kTargetAngularVelocity},
+      {target_translations, "target_translations", ActionKind::kTargetTranslation},
+      {target_linear_velocities, "target_linear_velocities",
+       ActionKind::kTargetLinearVelocity},
+  };
+  for (const auto& keyword : keywords) {
+    AddActions(actions, batch, keyword.values, keyword.name, keyword.kind);
+  }
+  StepIo io;
+  io.actions = actions.actions;
+  io.reset_mask = MaskArgument(reset_mask, "reset_mask", batch.world_count());
+  const Shape state_shape{worlds, bodies, kStateFloatsPerBody};
+  if (!reset_states.is_none()) {
+    io.reset_states = ArrayArgument<float>(reset_states, "reset_states", state_shape);
+  }
+  if (!state_out.is_none()) {
+    io.state_out = OutputArgument<float>(state_out, "state_out", state_shape);
+  }
+  if (!joints_out.is_none()) {
+    io.joints_out = OutputArgument<float>(
+        joints_out, "joints_out",
+        {worlds, static_cast<py::ssize_t>(batch.JointCoordinatesPerWorld())});
+  }
+  if (check_only) {
+    batch.CheckStep(copy, io);
+    return;
+  }
+  // The step runs on TBB's threads without the GIL: other Python
+  // threads go on meanwhile (a call on this same Batch from one of
+  // them raises RuntimeError: a Batch is one thread at a time).
+  py::gil_scoped_release release;
+  batch.Step(copy, io);
+}
+
+// Binds `name` with step's keywords (the same for step and check_step).
+template <class Fn>
+void DefWithStepKeywords(py::class_<Batch>& cls, const char* name, Fn fn, const char* doc) {
+  cls.def(name, fn, py::arg_v("settings", StepSettings{}, "StepSettings()"), py::kw_only(),
+          py::arg("body_forces") = py::none(), py::arg("body_torques") = py::none(),
+          py::arg("target_velocities") = py::none(), py::arg("target_positions") = py::none(),
+          py::arg("target_orientations") = py::none(),
+          py::arg("target_angular_velocities") = py::none(),
+          py::arg("target_translations") = py::none(),
+          py::arg("target_linear_velocities") = py::none(), py::arg("reset_mask") = py::none(),
+          py::arg("reset_states") = py::none(), py::arg("state_out") = py::none(),
+          py::arg("joints_out") = py::none(), doc);
+}
+
+// step and check_step take the same arguments: one function type for both.
+template <bool kCheckOnly>
+void StepBinding(Batch& batch, const StepSettings& settings, py::handle body_forces,
+                 py::handle body_torques, py::handle target_velocities,
+                 py::handle target_positions, py::handle target_orientations,
+                 py::handle target_angular_velocities, py::handle target_translations,
+                 py::handle target_linear_velocities, py::handle reset_mask,
+                 py::handle reset_states, py::handle state_out, py::handle joints_out) {
+  StepOrCheck(batch, settings, body_forces, body_torques, target_velocities, target_positions,
+              target_orientations, target_angular_velocities, target_translations,
+              target_linear_velocities, reset_mask, reset_states, state_out, joints_out,
+              kCheckOnly);
+}
+
 }  // namespace
 
 void BindStep(py::class_<Batch>& cls) {
-  cls.def(
-      "step",
-      [](Batch& batch, const StepSettings& settings, py::handle body_forces,
-         py::handle body_torques, py::handle target_velocities, py::handle target_positions,
-         py::handle target_orientations, py::handle target_angular_velocities,
-         py::handle target_translations, py::handle target_linear_velocities,
-         py::handle reset_mask, py::handle reset_states, py::handle state_out,
-         py::handle joints_out) {
-        // A copy: another Python thread may change the settings object
-        // while this one steps without the GIL.
-        const StepSettings copy = settings;
-        const auto worlds = static_cast<py::ssize_t>(batch.world_count());
-        const auto bodies = static_cast<py::ssize_t>(batch.body_count());
-        // Every argument checked (and refused by name) before the step;
-        // the C++ call checks the actions against the scene (a static
-        // body, a constraint without a motor) before writing any.
-        StepActions actions;
-        const struct {
-          py::handle values;
-          const char* name;
-          ActionKind kind;
-        } keywords[] = {
-            {body_forces, "body_forces", ActionKind::kForce},
-            {body_torques, "body_torques", ActionKind::kTorque},
-            {target_velocities, "target_velocities", ActionKind::kTargetVelocity},
-            {target_positions, "target_positions", ActionKind::kTargetPosition},
-            {target_orientations, "target_orientations", ActionKind::kTargetOrientation},
-            {target_angular_velocities, "target_angular_velocities",
-             ActionKind::kTargetAngularVelocity},
-            {target_translations, "target_translations", ActionKind::kTargetTranslation},
-            {target_linear_velocities, "target_linear_velocities",
-             ActionKind::kTargetLinearVelocity},
-        };
-        for (const auto& keyword : keywords) {
-          AddActions(actions, batch, keyword.values, keyword.name, keyword.kind);
-        }
-        StepIo io;
-        io.actions = actions.actions;
-        io.reset_mask = MaskArgument(reset_mask, "reset_mask", batch.world_count());
-        const Shape state_shape{worlds, bodies, kStateFloatsPerBody};
-        if (!reset_states.is_none()) {
-          io.reset_states = ArrayArgument<float>(reset_states, "reset_states", state_shape);
-        }
-        if (!state_out.is_none()) {
-          io.state_out = OutputArgument<float>(state_out, "state_out", state_shape);
-        }
-        if (!joints_out.is_none()) {
-          io.joints_out = OutputArgument<float>(
-              joints_out, "joints_out",
-              {worlds, static_cast<py::ssize_t>(batch.JointCoordinatesPerWorld())});
-        }
-        // The step runs on TBB's threads without the GIL: other Python
-        // threads go on meanwhile (a call on this same Batch from one of
-        // them raises RuntimeError: a Batch is one thread at a time).
-        py::gil_scoped_release release;
-        batch.Step(copy, io);
-      },
-      py::arg_v("settings", StepSettings{}, "StepSettings()"), py::kw_only(),
-      py::arg("body_forces") = py::none(), py::arg("body_torques") = py::none(),
-      py::arg("target_velocities") = py::none(), py::arg("target_positions") = py::none(),
-      py::arg("target_orientations") = py::none(),
-      py::arg("target_angular_velocities") = py::none(),
-      py::arg("target_translations") = py::none(),
-      py::arg("target_linear_velocities") = py::none(), py::arg("reset_mask") = py::none(), py::arg("reset_states") = py::none(),
-      py::arg("state_out") = py::none(), py::arg("joints_out") = py::none(),
+  DefWithStepKeywords(
+      cls, "step", &StepBinding<false>,
       "Steps every world by settings.delta_time (the GIL is released meanwhile). The "
       "keywords do an RL loop's actions, resets and observation reads inside the step's "
       "pass over each block of 16 worlds (cheaper than separate calls, same bits). Before "
@@ -161,6 +189,11 @@ void BindStep(py::class_<Batch>& cls) {
       "joint_coordinates_per_world]) as get_joint_coordinates(out=). For autoreset, pass "
       "the worlds done after the previous step: their observation is then their new "
       "episode's first. Every argument is checked before anything is written.");
+  DefWithStepKeywords(
+      cls, "check_step", &StepBinding<true>,
+      "Raises exactly what step(...) with the same arguments would raise, and steps and "
+      "writes nothing (manyworlds.sharding checks every MPI rank's step this way before "
+      "any rank steps).");
 }
 
 }  // namespace manyworlds::python

@@ -212,6 +212,13 @@ TEST(StepIoTest, RefusalsChangeAndWriteNothing) {
   const std::vector<std::uint8_t> health_before(batch.WorldHealth().begin(),
                                                 batch.WorldHealth().end());
   for (const Refused& r : refused) {
+    // CheckStep refuses exactly what Step refuses (ShardedBatch relies on it).
+    try {
+      batch.CheckStep(r.settings, r.io);
+      ADD_FAILURE() << "CheckStep did not refuse: " << r.message;
+    } catch (const std::exception& e) {
+      EXPECT_THAT(e.what(), HasSubstr(r.message));
+    }
     try {
       batch.Step(r.settings, r.io);
       ADD_FAILURE() << "not refused: " << r.message;
@@ -224,6 +231,10 @@ TEST(StepIoTest, RefusalsChangeAndWriteNothing) {
     EXPECT_TRUE(SameBits(state_out, std::vector<float>(state_floats, 7.0f))) << r.message;
     EXPECT_TRUE(SameBits(joints_out, std::vector<float>(joint_floats, 7.0f))) << r.message;
   }
+  // Accepted arguments: CheckStep neither steps nor writes the outputs.
+  EXPECT_NO_THROW(batch.CheckStep(StepSettings{}, with([&](StepIo& io) { io.reset_mask = mask; })));
+  EXPECT_TRUE(SameBits(before, Bytes(batch)));
+  EXPECT_TRUE(SameBits(state_out, std::vector<float>(state_floats, 7.0f)));
 }
 
 // A NaN force in one world: that world is flagged, every other world holds

@@ -83,9 +83,6 @@ constexpr const char* kUsage =
     "exit codes: 0 done, 1 refused by the library or the file system, 2 bad\n"
     "arguments, 130 run interrupted by Ctrl-C\n";
 
-// The line after a usage error, instead of the whole usage.
-constexpr const char* kUsageHint = "run 'manyworlds --help' for usage";
-
 // One line per scene: id, bodies, constraints and what it tests.
 int Scenes() {
   for (const std::string& id : AllSceneIds()) {
@@ -178,14 +175,7 @@ int main(int argc, char** argv) {
     throw UsageError(command.empty() ? std::string("no command given") + kCommands
                                      : "unknown command '" + std::string(command) + "'" +
                                            kCommands);
-  } catch (const UsageError& e) {
-    if (tools::PrintsErrors()) std::fprintf(stderr, "manyworlds: %s\n%s\n", e.what(), kUsageHint);
-    return 2;
-  } catch (const SceneError& e) {
-    if (tools::PrintsErrors()) std::fprintf(stderr, "manyworlds: the scene was refused: %s\n", e.what());
-    return 1;
-  } catch (const std::exception& e) {
-    if (tools::PrintsErrors()) std::fprintf(stderr, "manyworlds: %s\n", e.what());
-    return 1;
+  } catch (...) {
+    return tools::ReportError(std::current_exception(), true);
   }
 }

@@ -347,7 +347,7 @@ def case_mpirun():
 
     expect_one_error(2, ["--worlds", "0"], 2, "--worlds")
     expect_one_error(2, ["--record", "never.npz"], 2, "--record", "one process")
-    expect_one_error(3, ["--worlds", "2"], 1, "rank 0", "every rank needs at least one world")
+    expect_one_error(3, ["--worlds", "2"], 2, "--worlds 2", "every rank needs at least one world")
     if os.path.exists("never.npz"):
         fail("a refused --record left never.npz behind")
 

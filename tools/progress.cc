@@ -90,7 +90,8 @@ SigintStop::SigintStop(int signal) : signal_(signal) {
   action.sa_handler = OnSigint;
   sigemptyset(&action.sa_mask);
   // SA_RESETHAND: the first SIGINT puts the default action back, so the
-  // second one kills. No SA_RESTART needed: the loop makes no blocking calls.
+  // second one kills. No SA_RESTART: the loop's only blocking calls are
+  // MPI's (a sharded run), which retry after a signal themselves.
   action.sa_flags = SA_RESETHAND;
   sigaction(signal_, &action, &previous_action);
   installed_signal = signal_;

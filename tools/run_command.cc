@@ -6,14 +6,14 @@
 #include <cstdlib>
 #include <cstdio>
 #include <stdexcept>
+#include <string_view>
 #include <vector>
 
+#include "manyworlds/error.h"
 #include "manyworlds/mass_range.h"
 
 namespace manyworlds::tools {
 namespace {
-
-bool g_prints_errors = true;
 
 // Applies --mass-range-limit R (0 or absent: off) to `scene` and describes
 // what it changed, for the report.
@@ -119,13 +119,32 @@ int ReportInterrupted(std::uint64_t steps_done, const RunSetup& setup, const cha
 }
 
 bool StartedByMpirun() {
+  // An escape for a program started by an MPI process (which inherits these
+  // variables) that must not join its job: MANYWORLDS_NO_MPI=1.
+  const char* no_mpi = std::getenv("MANYWORLDS_NO_MPI");
+  if (no_mpi != nullptr && std::string_view(no_mpi) == "1") return false;
   for (const char* variable : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_SIZE"}) {
     if (std::getenv(variable) != nullptr) return true;
   }
   return false;
 }
 
-bool PrintsErrors() { return g_prints_errors; }
-void SetPrintsErrors(bool prints) { g_prints_errors = prints; }
+int ReportError(std::exception_ptr error, bool print) {
+  try {
+    std::rethrow_exception(error);
+  } catch (const UsageError& e) {
+    if (print) std::fprintf(stderr, "manyworlds: %s\nrun 'manyworlds --help' for usage\n", e.what());
+    return 2;
+  } catch (const SceneError& e) {
+    if (print) std::fprintf(stderr, "manyworlds: the scene was refused: %s\n", e.what());
+    return 1;
+  } catch (const std::exception& e) {
+    if (print) std::fprintf(stderr, "manyworlds: %s\n", e.what());
+    return 1;
+  } catch (...) {
+    if (print) std::fprintf(stderr, "manyworlds: an exception that is not a std::exception\n");
+    return 1;
+  }
+}
 
 }  // namespace manyworlds::tools

@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <exception>
 #include <functional>
 #include <string>
 
@@ -63,13 +64,15 @@ int ReportInterrupted(std::uint64_t steps_done, const RunSetup& setup,
                       const char* signal = "SIGINT");
 
 // Whether mpirun (or mpiexec) started this process: OpenMPI's
-// OMPI_COMM_WORLD_SIZE, PMIx's PMIX_RANK or MPICH's PMI_SIZE is set. `run`
-// then shards its worlds over the ranks (tools/sharded_run.h).
+// OMPI_COMM_WORLD_SIZE, PMIx's PMIX_RANK or MPICH's PMI_SIZE is set, and
+// MANYWORLDS_NO_MPI is not 1. `run` then shards its worlds over the ranks
+// (tools/sharded_run.h).
 bool StartedByMpirun();
 
-// Whether main() prints the error a command threw: false on every rank of a
-// sharded run but rank 0, since every rank raises the same one.
-bool PrintsErrors();
-void SetPrintsErrors(bool prints);
+// The exit code of an error a command threw (2 for a UsageError, else 1),
+// printed to stderr when `print`: one line naming the value and what is
+// accepted, then for a usage error the hint "run 'manyworlds --help' for
+// usage". (A sharded run prints on rank 0 only: every rank raises the same.)
+int ReportError(std::exception_ptr error, bool print);
 
 }  // namespace manyworlds::tools

@@ -2,8 +2,8 @@
 //
 // Each rank steps its own shard with the same per-world actions (keyed by
 // global world) as a one-process run; between steps the ranks exchange only
-// two ints (two allreduces: the Ctrl-C stop flag, so that all stop after the
-// same step, and ShardedBatch::Step's refusal check). The report's figures
+// two ints (two allreduces: the SIGUSR1 stop flag, so that all stop after
+// the same step, and ShardedBatch::Step's refusal check). The report's figures
 // are reduced to rank 0 at the end, with each rank's time per step outside
 // its own stepping (those messages, waiting for slower ranks, the actions).
 
@@ -14,6 +14,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
+#include <string>
 #include <cstdint>
 #include <vector>
 
@@ -66,32 +68,12 @@ WorldStats ReduceStats(const WorldStats& local, MPI_Comm comm) {
   return total;
 }
 
-}  // namespace
-
-int ShardedRun(int argc, char** argv) {
-  const MpiSession session(&argc, &argv);
-  int rank = 0, ranks = 1;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
-  SetPrintsErrors(rank == 0);  // every rank raises the same error: one copy
-
-  // Every rank parses the same arguments, so a usage error is raised by all
-  // alike before any message is exchanged.
-  const Options options = RunOptions(argc, argv);
-  if (ranks > 1 && options.Has(kRecordOption)) {
-    throw UsageError(std::string(kRecordOption) +
-                     " needs a run in one process: the trajectories are bit for bit the same "
-                     "whatever the rank count, so record the worlds without mpirun (or with "
-                     "-n 1)");
-  }
-  const RunSetup setup = ParseRunSetup(options);
+// The run itself, once the arguments are known to be good on every rank.
+int StepShards(const Options& options, const RunSetup& setup, const SigintStop& sigint, int rank,
+               int ranks) {
   ShardedBatch sharded(MPI_COMM_WORLD, setup.scene, setup.worlds, setup.batch_options);
   Batch& local = sharded.local();
   RunRecording recording(options, local, setup.scene_id, setup.settings.delta_time);
-  // OpenMPI's mpirun ends the job on Ctrl-C (SIGINT) but forwards SIGUSR1
-  // to every rank: `kill -USR1 <mpirun's pid>` stops after the same step on
-  // all ranks, with the report.
-  const SigintStop sigint(SIGUSR1);
   ProgressLine progress(setup.warmup + setup.steps, setup.worlds, rank == 0);
   // The time this rank spends stepping its worlds, against the loop's wall
   // time: the rest is MPI (messages and waiting for slower ranks) and the
@@ -158,6 +140,64 @@ int ShardedRun(int argc, char** argv) {
   for (int r = 0; r < ranks; ++r) facts.rank_worlds.push_back(sharded.shard_of(r).count);
   PrintRunReport(local, SceneActions(setup.scene_id), facts, stats);
   return loop.interrupted ? ReportInterrupted(loop.steps_done, setup, "SIGUSR1") : 0;
+}
+
+// ShardedRun without MPI's set-up: throws as `run` does.
+int RunOnRanks(int argc, char** argv, int rank, int ranks) {
+  // OpenMPI's mpirun ends the job on Ctrl-C (SIGINT) but forwards SIGUSR1
+  // to every rank: `kill -USR1 <mpirun's pid>` stops after the same step on
+  // all ranks, with the report. Installed first, so that no SIGUSR1 kills.
+  const SigintStop sigint(SIGUSR1);
+
+  // Every rank parses the same arguments, so a usage error is raised by all
+  // alike before any message is exchanged.
+  const Options options = RunOptions(argc, argv);
+  if (ranks > 1 && options.Has(kRecordOption)) {
+    throw UsageError(std::string(kRecordOption) +
+                     " needs a run in one process: the trajectories are bit for bit the same "
+                     "whatever the rank count, so record the worlds without mpirun (or with "
+                     "-n 1)");
+  }
+  const RunSetup setup = ParseRunSetup(options);
+  if (setup.worlds < std::size_t(ranks)) {
+    throw UsageError("--worlds " + std::to_string(setup.worlds) + " is fewer than the " +
+                     std::to_string(ranks) + " MPI ranks: every rank needs at least one world");
+  }
+  try {
+    return StepShards(options, setup, sigint, rank, ranks);
+  } catch (const RankError&) {
+    throw;  // raised on every rank alike
+  } catch (const std::exception& e) {
+    // Raised on this rank alone (e.g. out of memory): the others would wait
+    // for it in their next collective call forever, so end them all.
+    std::fprintf(stderr, "manyworlds: rank %d of %d: %s; ending every rank\n", rank, ranks,
+                 e.what());
+    std::fflush(stderr);
+    MPI_Abort(MPI_COMM_WORLD, 1);
+    return 1;
+  }
+}
+
+}  // namespace
+
+int ShardedRun(int argc, char** argv) {
+  const MpiSession session(&argc, &argv);
+  int rank = 0, ranks = 1;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+  int code = 0;
+  try {
+    code = RunOnRanks(argc, argv, rank, ranks);
+  } catch (...) {
+    // Every rank raised the same error (arguments, RankError): rank 0
+    // prints it once.
+    code = ReportError(std::current_exception(), rank == 0);
+  }
+  // No rank ends before rank 0 has printed its report or error: mpirun ends
+  // the whole job as soon as one rank exits with an error code.
+  std::fflush(stdout);
+  MPI_Barrier(MPI_COMM_WORLD);
+  return code;
 }
 
 }  // namespace manyworlds::tools

@@ -253,6 +253,11 @@ class Batch {
   // Step with the resets and observation reads of an RL loop done inside
   // the step's pass over each block (StepIo above). Returns as Step(stop).
   bool Step(const StepSettings& settings, const StepIo& io, std::stop_token stop = {});
+  // Throws exactly what Step(settings, io) would throw for these arguments
+  // (settings, then io's sizes and actions), and changes nothing: for callers
+  // that must know every step will be accepted before any steps (ShardedBatch
+  // checks every MPI rank's step this way before one rank steps).
+  void CheckStep(const StepSettings& settings, const StepIo& io = {}) const;
 
   // ---- state, world-major: [world][body][13] (see StateField)
   void GetState(std::span<float> out) const;

@@ -196,9 +196,40 @@ TEST(ShardedBatchTest, RefusalOnOneRankThrowsOnEveryRankAndNothingHangs) {
     EXPECT_EQ(e.rank(), 0);
     EXPECT_NE(std::string(e.what()).find("substeps"), std::string::npos) << e.what();
   }
+  // Settings only the last rank gets wrong: no rank steps, so every world
+  // stays where it was (the worlds of one process that did not step).
+  const std::vector<float> before = sharded.GatherStates(AllWorlds(100), kRoot);
+  StepSettings settings_of_rank;
+  if (sharded.rank() == last) settings_of_rank.velocity_iterations = -1;
+  try {
+    sharded.Step(settings_of_rank);
+    ADD_FAILURE() << "no RankError";
+  } catch (const RankError& e) {
+    EXPECT_EQ(e.rank(), last);
+    EXPECT_NE(std::string(e.what()).find("velocity_iterations"), std::string::npos) << e.what();
+  }
+  EXPECT_TRUE(SameBits(sharded.GatherStates(AllWorlds(100), kRoot), before));
   // A gather with a wrong size on one rank.
   std::vector<float> values(sharded.shard().count + (sharded.rank() == last ? 1 : 0));
   EXPECT_THROW(sharded.GatherPerWorld(values, 1, kRoot), RankError);
+  // Arguments that differ from rank 0's: named, not a mismatched gather.
+  if (sharded.ranks() > 1) {
+    const std::size_t per_world = sharded.rank() == last ? 2 : 1;
+    std::vector<float> rows(sharded.shard().count * per_world);
+    try {
+      (void)sharded.GatherPerWorld(rows, per_world, kRoot);
+      ADD_FAILURE() << "no RankError";
+    } catch (const RankError& e) {
+      EXPECT_EQ(e.rank(), last);
+      EXPECT_NE(std::string(e.what()).find("per_world 2 differs from rank 0's 1"),
+                std::string::npos)
+          << e.what();
+    }
+    const std::vector<std::size_t> list = {std::size_t(sharded.rank() == last ? 5 : 4)};
+    EXPECT_THROW((void)sharded.GatherStates(list, kRoot), RankError);
+    EXPECT_THROW((void)sharded.ReduceHealth(sharded.rank() == last ? 1 : 0), RankError);
+  }
+  EXPECT_THROW((void)sharded.GatherHealth(sharded.ranks()), RankError);  // not a rank
   // Still in step with each other: a collective step and gather work.
   sharded.Step(StepSettings{});
   const HealthCounts counts = sharded.ReduceHealth(kRoot);

@@ -76,16 +76,19 @@ class ShardedBatch:
         return _core.shard_of_worlds(self.num_worlds, rank, self.ranks)
 
     def step(self, *args, **kwargs):
-        """Collective local.step(...): every rank's worlds one step, or
-        RankError on every rank if any rank's step refused (bad settings or
-        arrays); a refusing rank's batch is unchanged."""
-        return agreed(self.comm, lambda: self.local.step(*args, **kwargs))
+        """Collective local.step(...): every rank's arguments are checked
+        (Batch.check_step) before any rank steps, so a refusal on one rank
+        (bad settings or arrays) raises RankError on every rank and no world
+        has stepped."""
+        agreed(self.comm, lambda: self.local.check_step(*args, **kwargs))
+        return self.local.step(*args, **kwargs)
 
     def gather(self, local_values, root=0):
         """Every rank's per-world rows ([count, ...], any dtype, the same row
-        shape and dtype on every rank) on `root` as [num_worlds, ...] in global
-        world order; None on the other ranks. A wrong row count on any rank
-        raises RankError on every rank."""
+        shape, dtype and root on every rank) on `root` as [num_worlds, ...] in
+        global world order; None on the other ranks. A wrong row count, or a
+        row shape, dtype or root unlike rank 0's, raises RankError on every
+        rank, naming the rank."""
         values = np.ascontiguousarray(local_values)
 
         def check():
@@ -95,23 +98,38 @@ class ShardedBatch:
             return values.shape[1:], values.dtype.str
 
         layout = agreed(self.comm, check)
-        layouts = self.comm.allgather(layout)
-        agreed(self.comm, lambda: _same_layout(layouts))
+        layouts = self.comm.allgather((layout, root))
+        differing = [r for r, other in enumerate(layouts) if other != layouts[0]]
+        if differing:  # every rank has the list: all raise the same
+            r = differing[0]
+            raise RankError(r, f"gather: rows {layouts[r][0][0]} of {layouts[r][0][1]} with root "
+                               f"{layouts[r][1]}, rank 0's {layouts[0][0][0]} of "
+                               f"{layouts[0][0][1]} with root {layouts[0][1]} (every rank must "
+                               "pass the same)")
+        if not 0 <= root < self.ranks:
+            raise ValueError(f"gather: root {root} is not one of the {self.ranks} ranks")
+        from mpi4py import MPI
         row_bytes = values.itemsize * int(np.prod(layout[0], dtype=np.int64))
-        counts = [self.shard_of(r)[1] * row_bytes for r in range(self.ranks)]
-        if max(counts) > np.iinfo(np.int32).max:
-            raise ValueError("gather: more than 2 GiB from one rank; gather in parts")
-        out = None
-        recv = None
-        if self.rank == root:
-            out = np.empty((self.num_worlds, *layout[0]), values.dtype)
-            displacements = np.concatenate([[0], np.cumsum(counts[:-1])]).astype(np.int64)
-            recv = [out.view(np.uint8).reshape(-1), counts, displacements.tolist(), _byte()]
-        self.comm.Gatherv([values.view(np.uint8).reshape(-1), _byte()], recv, root=root)
+        out = np.empty((self.num_worlds, *layout[0]), values.dtype) if self.rank == root else None
+        if row_bytes == 0:
+            return out
+        # One datatype per row: counts in rows, so no byte count or offset
+        # overflows MPI's int however much root receives.
+        row = MPI.BYTE.Create_contiguous(row_bytes).Commit()
+        try:
+            recv = None
+            if self.rank == root:
+                counts = [self.shard_of(r)[1] for r in range(self.ranks)]
+                displacements = np.concatenate([[0], np.cumsum(counts[:-1])]).tolist()
+                recv = [out.view(np.uint8).reshape(-1), counts, displacements, row]
+            self.comm.Gatherv([values.view(np.uint8).reshape(-1), self.count, row], recv,
+                              root=root)
+        finally:
+            row.Free()
         return out
 
     def reduce_health(self, root=0):
-        """On root, {"unhealthy": worlds with any health bit, and per bit:
+        """(Every rank passes the same root.) On root, {"unhealthy": worlds with any health bit, and per bit:
         "non_finite_state", "velocity_overflow", "out_of_range",
         "non_finite_input", "not_stepped"} over every rank's worlds; None
         elsewhere."""
@@ -132,11 +150,3 @@ class ShardedBatch:
                 f"{self.num_worlds} on rank {self.rank} of {self.ranks})")
 
 
-def _same_layout(layouts):
-    if any(layout != layouts[0] for layout in layouts):
-        raise ValueError(f"gather: the ranks' rows differ in shape or dtype: {layouts}")
-
-
-def _byte():
-    from mpi4py import MPI
-    return MPI.BYTE

@@ -9,10 +9,10 @@ What must hold on every rank:
   coordinates and health are bit for bit one process's batch of all the
   worlds (ragdoll and cartpole; a NaN world flagged on its rank only);
 - reduce_health counts every rank's worlds;
-- a refusal on one rank (bad step settings on the last rank, a gather with
-  the wrong row count on rank 0, rows of different dtypes, too few worlds)
-  raises RankError naming that rank on every rank, and the next collective
-  call works.
+- a refusal on one rank (bad step settings on the last rank, after which no
+  rank has stepped; a gather with the wrong row count on rank 0, or with
+  another dtype on the last rank; too few worlds) raises RankError naming
+  that rank on every rank, and the next collective call works.
 """
 
 import sys
@@ -86,12 +86,15 @@ def check_refusals():
     last = RANKS - 1
     bad = mw.StepSettings()
     bad.substeps = 0
+    before = sharded.gather(sharded.local.get_state())
     expect_rank_error(last, "substeps",
                       lambda: sharded.step(bad if RANK == last else mw.StepSettings()))
+    after = sharded.gather(sharded.local.get_state())  # no rank stepped
+    assert RANK != 0 or np.array_equal(bits(before), bits(after)), "a rank stepped"
     rows = sharded.count + (1 if RANK == 0 else 0)
     expect_rank_error(0, "expected", lambda: sharded.gather(np.zeros(rows, np.float32)))
     dtype = np.float64 if RANK == last else np.float32
-    expect_rank_error(0, "differ", lambda: sharded.gather(np.zeros(sharded.count, dtype)))
+    expect_rank_error(last, "rank 0's", lambda: sharded.gather(np.zeros(sharded.count, dtype)))
     expect_rank_error(0, "every rank needs at least one world",
                       lambda: ShardedBatch(COMM, mw.make_scene("cartpole"), RANKS - 1))
     sharded.step(mw.StepSettings())  # still in step with each other

@@ -12,7 +12,7 @@
 //     actions.Apply(batch.local(), step, seed, batch.shard().first);
 //     batch.Step(StepSettings{});                          // collective
 //   }
-//   const HealthCounts health = batch.ReduceHealth();      // root: every rank's
+//   const HealthCounts health = batch.ReduceHealth();      // on root, all worlds
 //   const std::vector<float> states = batch.GatherStates(worlds_to_look_at);
 //
 // Collective calls (the constructor, Step, AllOrNone, the gathers) must be
@@ -106,16 +106,19 @@ class ShardedBatch {
   // run. For per-world inputs that one rank may refuse.
   void AllOrNone(const std::function<void(Batch&)>& fn);
 
-  // Collective: one Step of every rank's worlds, refused on every rank
-  // (RankError) if any rank refuses its settings. Costs one allreduce of an
-  // int besides the step.
+  // Collective: one Step of every rank's worlds. Every rank's arguments are
+  // checked (Batch::CheckStep) before any rank steps: if one rank refuses,
+  // every rank throws RankError and no world has stepped. Costs one
+  // allreduce of an int besides the step.
   void Step(const StepSettings& settings);
   // Collective: the same with the StepIo of the local worlds (its spans are
   // [local world]...; see Batch::Step).
   void Step(const StepSettings& settings, const StepIo& io);
 
   // Collective reductions and gathers to `root`. On other ranks they return
-  // an empty result. Worlds are in global order.
+  // an empty result. Worlds are in global order. Every rank must pass the
+  // same root (and per_world, list): a rank that passes another throws
+  // RankError on every rank, naming it, instead of a mismatched gather.
   HealthCounts ReduceHealth(int root = 0) const;
   // Every world's WorldHealth byte, [total_worlds].
   std::vector<std::uint8_t> GatherHealth(int root = 0) const;
@@ -133,6 +136,12 @@ class ShardedBatch {
 
  private:
   std::vector<int> WorldsPerRank() const;  // shard_of(r).count for every rank
+  // Collective: throws RankError on every rank, naming the lowest rank
+  // whose `values` differ from rank 0's or whose local_check() throws, or
+  // for a root that is not a rank.
+  void CheckSameAsRankZero(const char* call, std::vector<std::uint64_t> values,
+                           const std::vector<const char*>& names, int root,
+                           const std::function<void()>& local_check) const;
   MPI_Comm comm_ = MPI_COMM_NULL;  // our duplicate of the caller's
   int rank_ = 0;
   int ranks_ = 1;

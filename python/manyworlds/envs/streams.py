@@ -11,9 +11,9 @@ BigCrush as a sequence; Steele, Lea and Flood, "Fast splittable
 pseudorandom number generators", OOPSLA 2014). Uniform doubles take the top
 53 bits; normals come from the Box-Muller transform of two uniforms.
 
-The draw methods have numpy.random.Generator's names and signatures, so the
-tasks' _reset_states(idx, rng) code reads the same; the first dimension of
-every `size` is the number of worlds.
+The draw methods have numpy.random.Generator's names and argument order, so
+the tasks' _reset_states(idx, rng) code reads the same; `size` is required
+and its first dimension is the number of worlds.
 """
 
 import numpy as np
@@ -92,7 +92,7 @@ class WorldRandom:
         """Uniform float64 in [0, 1)."""
         return (self._bits(size) >> _TOP53).astype(np.float64) * _UNIT
 
-    def uniform(self, low=0.0, high=1.0, size=None):
+    def uniform(self, low, high, size):
         """Uniform in [low, high), as Generator.uniform: low + (high - low) u."""
         return low + (high - low) * self.random(size)
 
@@ -102,5 +102,5 @@ class WorldRandom:
         u2 = self.random(size)
         return np.sqrt(-2.0 * np.log1p(-u1)) * np.cos(2.0 * np.pi * u2)
 
-    def normal(self, loc=0.0, scale=1.0, size=None):
+    def normal(self, loc, scale, size):
         return loc + scale * self.standard_normal(size)

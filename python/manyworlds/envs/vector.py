@@ -163,11 +163,23 @@ class ManyWorldsVectorEnv(_compat.VectorEnvBase):
         options: {"reset_mask": bool [num_envs]} resets only those worlds
         (the others keep their observation), and any randomisation option
         overrides make()'s for this reset. Collective under MPI."""
-        mask, overrides = self._agreed(lambda: self._reset_arguments(options))
-        if seed is not None:
+        def check():
+            mask, overrides = self._reset_arguments(options)
+            return mask, overrides, (None if seed is None else streams.key_of(seed))
+
+        mask, overrides, key = self._agreed(check)
+        if self.comm is not None:
+            # The same seed (or none) on every rank, or the shards would not
+            # be one environment: every rank compares them all.
+            keys = self.comm.allgather(key)
+            differing = [r for r, other in enumerate(keys) if other != keys[0]]
+            if differing:
+                raise sharding.RankError(differing[0], "reset: seed differs from rank 0's "
+                                                       "(every rank must pass the same seed)")
+        if key is not None:
             self._np_random = np.random.default_rng(seed)
             self._np_random_seed = seed if isinstance(seed, int) else None
-            self._stream_key = streams.key_of(seed)
+            self._stream_key = key
             self._episodes[:] = 0
         elif self._stream_key is None:
             # From entropy; every rank must use the same key.
@@ -192,6 +204,8 @@ class ManyWorldsVectorEnv(_compat.VectorEnvBase):
                 raise ValueError(f"reset_mask: expected a numpy bool array of shape "
                                  f"({self.num_envs},), got {type(mask).__name__} "
                                  f"{getattr(mask, 'dtype', '')} {getattr(mask, 'shape', '')}")
+            # (Sharded, a rank's mask may select none of its worlds when
+            # other ranks reset theirs.)
             if not mask.any() and self.comm is None:
                 raise ValueError("reset_mask: selects no environment")
             if self._needs_reset and not mask.all():
