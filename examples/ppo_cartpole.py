@@ -370,8 +370,8 @@ def parse_args(argv=None):
             parser.error(f"--{name.replace('_', '-')}: expected >= 1, got {getattr(args, name)}")
     if args.threads < 0:
         parser.error(f"--threads: expected >= 0, got {args.threads}")
-    if args.envs * args.rollout < args.minibatches:
-        parser.error("--minibatches: more minibatches than samples per update")
+    if args.envs * args.rollout < 2 * args.minibatches:
+        parser.error("--minibatches: fewer than two samples per minibatch")
     return args
 
 
@@ -408,14 +408,15 @@ def write_curve(curve, out, target, random_return):
 def main(argv=None, comm=None):
     args = parse_args(argv)
     ranks = Ranks(comm)
-    # Every rank needs a world, and samples for every minibatch.
+    # Every rank needs a world, and two samples for every minibatch (one
+    # sample has no standard deviation to normalise its advantage by).
     smallest = min(manyworlds.shard_of_worlds(args.envs, r, ranks.size)[1]
                    for r in range(ranks.size)) if args.envs >= ranks.size else 0
-    if smallest * args.rollout < args.minibatches:
+    if smallest * args.rollout < 2 * args.minibatches:
         if ranks.rank == 0:
             print(f"--envs {args.envs} over {ranks.size} ranks: the smallest shard has "
                   f"{smallest} worlds, {smallest * args.rollout} samples per update, fewer than "
-                  f"--minibatches {args.minibatches}", file=sys.stderr)
+                  f"two for each of --minibatches {args.minibatches}", file=sys.stderr)
         return 2
     random_return = ranks.bcast(random_policy_return(args.eval_envs, args.seed, args.threads)
                                 if ranks.rank == 0 else None)

@@ -6,13 +6,14 @@
 // refusal checks (one allreduce of an int per collective call; a gather
 // also checks that every rank passed rank 0's arguments, one broadcast) and
 // what the caller gathers. Gathers use MPI_Gatherv with one derived
-// datatype per world, so counts are in worlds, not bytes or floats: MPI's
-// int holds them up to 2^31 worlds per rank.
+// datatype per world, so counts and offsets are in worlds, not bytes or
+// floats: MPI's int holds them up to 2^31 worlds in all.
 
 #include "manyworlds/sharded_batch.h"
 
 #include <algorithm>
 #include <climits>
+#include <cstdio>
 #include <cstring>
 #include <string>
 #include <utility>
@@ -158,7 +159,17 @@ void ShardedBatch::Step(const StepSettings& settings, const StepIo& io) {
   // Every rank's arguments checked before any rank steps: a refusal leaves
   // every shard where it was, so the worlds stay those of one process.
   AllOrNone([&](Batch& batch) { batch.CheckStep(settings, io); });
-  local_->Step(settings, io);
+  try {
+    local_->Step(settings, io);
+  } catch (const std::exception& e) {
+    // Accepted by the check, failed here alone (out of memory, another
+    // thread's call): the other ranks would wait for this one forever.
+    std::fprintf(stderr, "manyworlds: ShardedBatch::Step failed on rank %d of %d after every "
+                         "rank's check passed: %s; ending every rank\n",
+                 rank_, ranks_, e.what());
+    std::fflush(stderr);
+    MPI_Abort(comm_, 1);
+  }
 }
 
 void ShardedBatch::CheckSameAsRankZero(const char* call, std::vector<std::uint64_t> values,

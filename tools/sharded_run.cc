@@ -3,7 +3,7 @@
 // Each rank steps its own shard with the same per-world actions (keyed by
 // global world) as a one-process run; between steps the ranks exchange only
 // two ints (two allreduces: the SIGUSR1 stop flag, so that all stop after
-// the same step, and ShardedBatch::Step's refusal check). The report's figures
+// the same step, and the step's refusal agreement, AllOrNone). The report's figures
 // are reduced to rank 0 at the end, with each rank's time per step outside
 // its own stepping (those messages, waiting for slower ranks, the actions).
 
@@ -89,7 +89,8 @@ int StepShards(const Options& options, const RunSetup& setup, const SigintStop& 
         return any != 0;
       },
       [&] {
-        // ShardedBatch::Step, with the local step timed apart.
+        // The local step inside the refusal agreement (the settings are the
+        // same on every rank), timed apart.
         sharded.AllOrNone([&](Batch& batch) {
           const auto start = std::chrono::steady_clock::now();
           batch.Step(setup.settings);
@@ -158,6 +159,9 @@ int RunOnRanks(int argc, char** argv, int rank, int ranks) {
                      "whatever the rank count, so record the worlds without mpirun (or with "
                      "-n 1)");
   }
+  if (options.Has(kRecordWorldsOption) && !options.Has(kRecordOption)) {
+    throw UsageError(std::string(kRecordWorldsOption) + " needs " + kRecordOption + " FILE");
+  }
   const RunSetup setup = ParseRunSetup(options);
   if (setup.worlds < std::size_t(ranks)) {
     throw UsageError("--worlds " + std::to_string(setup.worlds) + " is fewer than the " +
@@ -168,6 +172,7 @@ int RunOnRanks(int argc, char** argv, int rank, int ranks) {
   } catch (const RankError&) {
     throw;  // raised on every rank alike
   } catch (const std::exception& e) {
+    if (ranks == 1) throw;  // nobody to wait for it: reported as `run` reports
     // Raised on this rank alone (e.g. out of memory): the others would wait
     // for it in their next collective call forever, so end them all.
     std::fprintf(stderr, "manyworlds: rank %d of %d: %s; ending every rank\n", rank, ranks,

@@ -254,7 +254,8 @@ class Batch {
   // the step's pass over each block (StepIo above). Returns as Step(stop).
   bool Step(const StepSettings& settings, const StepIo& io, std::stop_token stop = {});
   // Throws exactly what Step(settings, io) would throw for these arguments
-  // (settings, then io's sizes and actions), and changes nothing: for callers
+  // (io's sizes and actions, then the settings; also std::logic_error during
+  // another thread's call), and changes nothing: for callers
   // that must know every step will be accepted before any steps (ShardedBatch
   // checks every MPI rank's step this way before one rank steps).
   void CheckStep(const StepSettings& settings, const StepIo& io = {}) const;

@@ -18,6 +18,8 @@ rank raises RankError naming it on every rank, so no rank is left waiting.
 mpi4py is imported only by the calls that need it.
 """
 
+import itertools
+
 import numpy as np
 
 from . import _core
@@ -81,7 +83,17 @@ class ShardedBatch:
         (bad settings or arrays) raises RankError on every rank and no world
         has stepped."""
         agreed(self.comm, lambda: self.local.check_step(*args, **kwargs))
-        return self.local.step(*args, **kwargs)
+        try:
+            return self.local.step(*args, **kwargs)
+        except BaseException as e:
+            # Accepted by the check, failed here alone: the other ranks could
+            # not go on without this one.
+            import sys
+            print(f"manyworlds: ShardedBatch.step failed on rank {self.rank} of {self.ranks} "
+                  f"after every rank's check passed: {e!r}; ending every rank", file=sys.stderr,
+                  flush=True)
+            self.comm.Abort(1)
+            raise
 
     def gather(self, local_values, root=0):
         """Every rank's per-world rows ([count, ...], any dtype, the same row
@@ -106,8 +118,8 @@ class ShardedBatch:
                                f"{layouts[r][1]}, rank 0's {layouts[0][0][0]} of "
                                f"{layouts[0][0][1]} with root {layouts[0][1]} (every rank must "
                                "pass the same)")
-        if not 0 <= root < self.ranks:
-            raise ValueError(f"gather: root {root} is not one of the {self.ranks} ranks")
+        if not 0 <= root < self.ranks:  # the same root everywhere: all raise
+            raise RankError(0, f"gather: root {root} is not one of the {self.ranks} ranks")
         from mpi4py import MPI
         row_bytes = values.itemsize * int(np.prod(layout[0], dtype=np.int64))
         out = np.empty((self.num_worlds, *layout[0]), values.dtype) if self.rank == root else None
@@ -120,7 +132,7 @@ class ShardedBatch:
             recv = None
             if self.rank == root:
                 counts = [self.shard_of(r)[1] for r in range(self.ranks)]
-                displacements = np.concatenate([[0], np.cumsum(counts[:-1])]).tolist()
+                displacements = [0, *itertools.accumulate(counts[:-1])]
                 recv = [out.view(np.uint8).reshape(-1), counts, displacements, row]
             self.comm.Gatherv([values.view(np.uint8).reshape(-1), self.count, row], recv,
                               root=root)
@@ -134,6 +146,13 @@ class ShardedBatch:
         "non_finite_input", "not_stepped"} over every rank's worlds; None
         elsewhere."""
         from mpi4py import MPI
+        roots = self.comm.allgather(root)
+        differing = [r for r, other in enumerate(roots) if other != roots[0]]
+        if differing:
+            raise RankError(differing[0], f"reduce_health: root {roots[differing[0]]}, rank 0's "
+                                          f"{roots[0]} (every rank must pass the same)")
+        if not 0 <= root < self.ranks:
+            raise RankError(0, f"reduce_health: root {root} is not one of the {self.ranks} ranks")
         health = np.asarray(self.local.health)
         local = np.array([np.count_nonzero(health)]
                          + [np.count_nonzero(health & (1 << bit)) for bit in range(5)], np.int64)

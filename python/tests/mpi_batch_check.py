@@ -1,5 +1,5 @@
 """manyworlds.sharding.ShardedBatch under mpirun: ctest
-python_mpi_batch_2_ranks and _3_ranks run
+python_mpi_batch_{1,2,3}_ranks run
 
     mpirun -n R --oversubscribe /usr/bin/python3 -m mpi4py python/tests/mpi_batch_check.py
 
@@ -93,8 +93,13 @@ def check_refusals():
     assert RANK != 0 or np.array_equal(bits(before), bits(after)), "a rank stepped"
     rows = sharded.count + (1 if RANK == 0 else 0)
     expect_rank_error(0, "expected", lambda: sharded.gather(np.zeros(rows, np.float32)))
-    dtype = np.float64 if RANK == last else np.float32
-    expect_rank_error(last, "rank 0's", lambda: sharded.gather(np.zeros(sharded.count, dtype)))
+    if RANKS > 1:  # rows unlike rank 0's need a second rank
+        dtype = np.float64 if RANK == last else np.float32
+        expect_rank_error(last, "rank 0's",
+                          lambda: sharded.gather(np.zeros(sharded.count, dtype)))
+        expect_rank_error(last, "reduce_health: root",
+                          lambda: sharded.reduce_health(1 if RANK == last else 0))
+    expect_rank_error(0, "not one of", lambda: sharded.gather(np.zeros(sharded.count), RANKS))
     expect_rank_error(0, "every rank needs at least one world",
                       lambda: ShardedBatch(COMM, mw.make_scene("cartpole"), RANKS - 1))
     sharded.step(mw.StepSettings())  # still in step with each other

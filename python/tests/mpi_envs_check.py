@@ -1,5 +1,5 @@
 """The vector environments sharded over MPI ranks (comm=), checked under
-mpirun: ctest python_mpi_envs_2_ranks and _3_ranks run
+mpirun: ctest python_mpi_envs_{1,2,3}_ranks run
 
     mpirun -n R --oversubscribe /usr/bin/python3 -m mpi4py python/tests/mpi_envs_check.py
 

@@ -109,7 +109,9 @@ class ShardedBatch {
   // Collective: one Step of every rank's worlds. Every rank's arguments are
   // checked (Batch::CheckStep) before any rank steps: if one rank refuses,
   // every rank throws RankError and no world has stepped. Costs one
-  // allreduce of an int besides the step.
+  // allreduce of an int besides the step. A step that fails on one rank
+  // after passing the check (out of memory) calls MPI_Abort: the other
+  // ranks could not go on without it.
   void Step(const StepSettings& settings);
   // Collective: the same with the StepIo of the local worlds (its spans are
   // [local world]...; see Batch::Step).
