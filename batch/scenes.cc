@@ -2,6 +2,7 @@
 
 #include "manyworlds/scenes.h"
 
+#include "batch/hash.h"
 #include "batch/scene_bodies.h"
 #include "batch/scene_ids.h"
 
@@ -273,21 +274,15 @@ Scene Ragdoll() {
   return scene;
 }
 
-// splitmix64's finaliser (Steele, Lea, Flood 2014).
-constexpr std::uint64_t Mix(std::uint64_t x) {
-  x += 0x9E3779B97F4A7C15ull;
-  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
-  x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
-  return x ^ (x >> 31);
-}
-
 // The cartpole's force: a hash of (seed, step), shared by every world of a
 // step, then of the world; its top 24 bits are a float in [0, 1) without
 // rounding, scaled to [-10, 10) N.
-std::uint64_t StepKey(std::uint64_t seed, std::uint64_t step) { return Mix(Mix(seed) ^ step); }
+std::uint64_t StepKey(std::uint64_t seed, std::uint64_t step) {
+  return SplitMix64(SplitMix64(seed) ^ step);
+}
 // The top 24 bits of the world's hash: a float in [0, 1) without rounding.
 float UnitOf(std::uint64_t key, std::uint64_t world) {
-  return float(Mix(key ^ world) >> 40) * 0x1p-24f;
+  return float(SplitMix64(key ^ world) >> 40) * 0x1p-24f;
 }
 float ForceOf(std::uint64_t step_key, std::uint64_t world) {
   return -10.0f + 20.0f * UnitOf(step_key, world);
@@ -386,7 +381,7 @@ MotorTarget SceneActions::Target(std::size_t i, std::uint64_t world, std::uint64
   }
   const TargetRange& range = targets_[i];
   // A key per (seed, step, motor), then the world's uniform value in [0, 1).
-  const float unit = UnitOf(Mix(StepKey(seed, step) ^ (0xA5A5ull + i)), world);
+  const float unit = UnitOf(SplitMix64(StepKey(seed, step) ^ (0xA5A5ull + i)), world);
   return MotorTarget{range.constraint, range.min + (range.max - range.min) * unit};
 }
 

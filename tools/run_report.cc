@@ -6,20 +6,15 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <vector>
 #include <span>
+#include <vector>
+
+#include "batch/hash.h"
 
 namespace manyworlds::tools {
 namespace {
 
 unsigned long long Ull(std::uint64_t value) { return static_cast<unsigned long long>(value); }
-
-// SplitMix64's finaliser: every input bit reaches every output bit.
-std::uint64_t Mix(std::uint64_t x) {
-  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
-  x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
-  return x ^ (x >> 31);
-}
 
 }  // namespace
 
@@ -30,11 +25,11 @@ WorldStats WorldStats::Of(const Batch& batch, std::uint64_t timed_steps_done,
   std::vector<float> states(batch.world_count() * per_world);
   batch.GetState(states);
   for (std::size_t w = 0; w < batch.world_count(); ++w) {
-    std::uint64_t hash = Mix(first_world + w);
+    std::uint64_t hash = SplitMix64(first_world + w);
     for (std::size_t i = 0; i < per_world; ++i) {
       std::uint32_t bits;
       std::memcpy(&bits, &states[w * per_world + i], sizeof bits);
-      hash = Mix(hash ^ bits);
+      hash = SplitMix64(hash ^ bits);
     }
     stats.state_digest += hash;
   }

@@ -55,6 +55,17 @@ def agreed(comm, check):
     raise RankError(int(first[0]), message) from error
 
 
+def same_on_every_rank(comm, value, describe):
+    """Collective: raises RankError on every rank, naming the lowest rank
+    whose `value` differs from rank 0's, with describe(its value, rank 0's)
+    as the message (one allgather; every rank compares the same list, so all
+    raise alike)."""
+    values = comm.allgather(value)
+    for rank, other in enumerate(values):
+        if other != values[0]:
+            raise RankError(rank, f"{describe(other, values[0])} (every rank must pass the same)")
+
+
 class ShardedBatch:
     """num_worlds copies of `scene` over the ranks of `comm` (collective).
 
@@ -110,16 +121,11 @@ class ShardedBatch:
             return values.shape[1:], values.dtype.str
 
         layout = agreed(self.comm, check)
-        layouts = self.comm.allgather((layout, root))
-        differing = [r for r, other in enumerate(layouts) if other != layouts[0]]
-        if differing:  # every rank has the list: all raise the same
-            r = differing[0]
-            raise RankError(r, f"gather: rows {layouts[r][0][0]} of {layouts[r][0][1]} with root "
-                               f"{layouts[r][1]}, rank 0's {layouts[0][0][0]} of "
-                               f"{layouts[0][0][1]} with root {layouts[0][1]} (every rank must "
-                               "pass the same)")
-        if not 0 <= root < self.ranks:  # the same root everywhere: all raise
-            raise RankError(0, f"gather: root {root} is not one of the {self.ranks} ranks")
+        same_on_every_rank(self.comm, (layout, root),
+                           lambda mine, zero: f"gather: rows {mine[0][0]} of {mine[0][1]} with "
+                                              f"root {mine[1]}, rank 0's {zero[0][0]} of "
+                                              f"{zero[0][1]} with root {zero[1]}")
+        self._check_root(root, "gather")
         from mpi4py import MPI
         row_bytes = values.itemsize * int(np.prod(layout[0], dtype=np.int64))
         out = np.empty((self.num_worlds, *layout[0]), values.dtype) if self.rank == root else None
@@ -141,18 +147,14 @@ class ShardedBatch:
         return out
 
     def reduce_health(self, root=0):
-        """(Every rank passes the same root.) On root, {"unhealthy": worlds with any health bit, and per bit:
-        "non_finite_state", "velocity_overflow", "out_of_range",
-        "non_finite_input", "not_stepped"} over every rank's worlds; None
-        elsewhere."""
+        """On root (the same on every rank), {"unhealthy": worlds with any
+        health bit, and per bit: "non_finite_state", "velocity_overflow",
+        "out_of_range", "non_finite_input", "not_stepped"} over every rank's
+        worlds; None elsewhere."""
         from mpi4py import MPI
-        roots = self.comm.allgather(root)
-        differing = [r for r, other in enumerate(roots) if other != roots[0]]
-        if differing:
-            raise RankError(differing[0], f"reduce_health: root {roots[differing[0]]}, rank 0's "
-                                          f"{roots[0]} (every rank must pass the same)")
-        if not 0 <= root < self.ranks:
-            raise RankError(0, f"reduce_health: root {root} is not one of the {self.ranks} ranks")
+        same_on_every_rank(self.comm, root,
+                           lambda mine, zero: f"reduce_health: root {mine}, rank 0's {zero}")
+        self._check_root(root, "reduce_health")
         health = np.asarray(self.local.health)
         local = np.array([np.count_nonzero(health)]
                          + [np.count_nonzero(health & (1 << bit)) for bit in range(5)], np.int64)
@@ -163,6 +165,11 @@ class ShardedBatch:
         names = ("unhealthy", "non_finite_state", "velocity_overflow", "out_of_range",
                  "non_finite_input", "not_stepped")
         return dict(zip(names, (int(v) for v in total)))
+
+    def _check_root(self, root, call):
+        """After same_on_every_rank: the same root everywhere, so all raise."""
+        if not 0 <= root < self.ranks:
+            raise RankError(0, f"{call}: root {root} is not one of the {self.ranks} ranks")
 
     def __repr__(self):
         return (f"ShardedBatch(worlds [{self.first}, {self.first + self.count}) of "

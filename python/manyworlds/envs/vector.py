@@ -171,11 +171,8 @@ class ManyWorldsVectorEnv(_compat.VectorEnvBase):
         if self.comm is not None:
             # The same seed (or none) on every rank, or the shards would not
             # be one environment: every rank compares them all.
-            keys = self.comm.allgather(key)
-            differing = [r for r, other in enumerate(keys) if other != keys[0]]
-            if differing:
-                raise sharding.RankError(differing[0], "reset: seed differs from rank 0's "
-                                                       "(every rank must pass the same seed)")
+            sharding.same_on_every_rank(self.comm, key,
+                                        lambda mine, zero: "reset: seed differs from rank 0's")
         if key is not None:
             self._np_random = np.random.default_rng(seed)
             self._np_random_seed = seed if isinstance(seed, int) else None
