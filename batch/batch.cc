@@ -138,7 +138,7 @@ Batch::Impl::Impl(const Scene& scene, std::size_t world_count, BatchOptions opti
 }
 
 void Batch::Impl::Step(const StepSettings& settings, std::stop_token stop, const BlockIo* io) {
-  CheckStepSettings(settings);
+  CheckStepSettings(settings, plan_);
   const float substep_dt = settings.delta_time / static_cast<float>(settings.substeps);
   StepParams params{};
   params.substep_delta_time = substep_dt;
@@ -151,6 +151,8 @@ void Batch::Impl::Step(const StepSettings& settings, std::stop_token stop, const
   params.baumgarte = settings.baumgarte;
   params.gravity = settings.gravity;
   params.gyroscopic = settings.gyroscopic;
+  params.solver = settings.solver;
+  params.exact_tolerance = settings.exact_tolerance;
   previous_substep_dt_ = substep_dt;
 
   const std::size_t grain =
@@ -510,6 +512,15 @@ std::string Batch::Plan(const StepSettings& settings) const {
   return DescribePlan(impl().plan_, settings) + "kernels: " +
          impl().kernels_->target.name + ", " +
          std::to_string(impl().kernels_->target.vector_lanes) + " float lanes per vector\n";
+}
+
+const char* JointSolverName(JointSolver solver) {
+  switch (solver) {
+    case JointSolver::kGaussSeidel: return "gauss_seidel";
+    case JointSolver::kExact: return "exact";
+  }
+  throw std::invalid_argument("JointSolver " + std::to_string(unsigned(solver)) +
+                              " is not a JointSolver (accepted 0 and 1)");
 }
 
 const char* StepPhaseName(StepPhase phase) {

@@ -79,7 +79,7 @@ void Batch::Impl::FinishBlock(std::size_t block, const BlockIo& io, bool stepped
 void Batch::CheckStep(const StepSettings& settings, const StepIo& io) const {
   // In Step's order: io first (CheckedBlockIo), then the settings (Impl::Step).
   impl().CheckedBlockIo(io);
-  CheckStepSettings(settings);
+  CheckStepSettings(settings, impl().plan_);
 }
 
 bool Batch::Step(const StepSettings& settings, const StepIo& io, std::stop_token stop) {

@@ -361,7 +361,7 @@ AxisLimitKind SixDofAxisKind(const SixDofLimits& limits, std::size_t axis) {
   return AxisLimitKind::kLimited;
 }
 
-void CheckStepSettings(const StepSettings& s) {
+void CheckStepSettings(const StepSettings& s, const StepPlan& plan) {
   const std::string what = "step settings";
   if (!(s.substeps >= 1 && s.substeps <= kMaxSubsteps)) {
     Refuse(what, "substeps", "must lie in [1, " + std::to_string(kMaxSubsteps) + "] (got " +
@@ -390,6 +390,15 @@ void CheckStepSettings(const StepSettings& s) {
                                          std::to_string(unsigned(s.unhealthy_worlds)) + ")");
   }
   CheckFinite("step settings", "gravity", s.gravity);
+  if (s.solver != JointSolver::kGaussSeidel && s.solver != JointSolver::kExact) {
+    Refuse(what, "solver", "is not a JointSolver (got " + std::to_string(unsigned(s.solver)) + ")");
+  }
+  if (!(s.exact_tolerance > 0.0f && std::isfinite(s.exact_tolerance))) {
+    Refuse(what, "exact_tolerance", "must be finite and > 0 (got " + ValueText(s.exact_tolerance) + ")");
+  }
+  if (s.solver == JointSolver::kExact && !plan.exact.available()) {
+    Refuse(what, "solver", std::string("is exact, but ") + plan.exact.unavailable);
+  }
 }
 
 StepPlan CompilePlan(const Scene& scene) {
@@ -669,6 +678,7 @@ StepPlan CompilePlan(const Scene& scene) {
   }
 
   plan.block_bytes = layout.bytes();
+  plan.exact = PlanExactSolve(scene, plan);
   return plan;
 }
 

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "batch/exact_plan.h"
 #include "kernels/hermite_path.h"  // HermitePathPoint
 #include "kernels/swing_twist.h"  // SwingTwistConfig
 #include "manyworlds/batch.h"
@@ -147,6 +148,7 @@ struct StepPlan {
   std::size_t health_offset = 0;  // WorldHealthLanes in the block
   std::size_t block_bytes = 0;  // one block of kLaneWidth worlds
   bool any_dynamic = false;
+  ExactSolvePlan exact;  // JointSolver::kExact
 
   std::size_t block_floats() const { return block_bytes / sizeof(float); }
 };
@@ -154,8 +156,9 @@ struct StepPlan {
 // Checks the scene and lays it out; throws SceneError.
 StepPlan CompilePlan(const Scene& scene);
 
-// Checks step settings; throws SceneError naming the field.
-void CheckStepSettings(const StepSettings& settings);
+// Checks step settings for the plan's scene; throws SceneError naming the
+// field (JointSolver::kExact on a scene it cannot solve: why, by name).
+void CheckStepSettings(const StepSettings& settings, const StepPlan& plan);
 
 // Human-readable plan: phases, constraints with their parts and features,
 // storage per block and per world.

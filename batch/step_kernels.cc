@@ -7,6 +7,9 @@
 //     4. velocity iterations, until none of the block's worlds applied an impulse
 //     5. integration                                    (dynamic and kinematic)
 //     6. position iterations, until none moved
+//   With JointSolver::kExact, 2-4 are one exact solve of every joint's
+//   velocity rows and 6 Newton steps of the same system per world until its
+//   joints are within the tolerance (batch/exact_solve-inl.h).
 //   forces and torques cleared; the health of every world checked (non-finite
 //   state, velocity overflow in the force step, coordinates out of range).
 //
@@ -32,6 +35,7 @@
 #include "batch/cone_constraint-inl.h"
 #include "batch/constraint_block.h"
 #include "batch/distance_constraint-inl.h"
+#include "batch/exact_solve-inl.h"
 #include "batch/fixed_constraint-inl.h"
 #include "batch/gear_constraint-inl.h"
 #include "batch/hinge_constraint-inl.h"
@@ -187,6 +191,11 @@ bool StepBlockWith(const StepPlan& plan, std::byte* block, const std::byte* next
                      Splat(params.gravity[2])};
   WorldHealthLanes& health = At<WorldHealthLanes>(block, plan.health_offset);
   health = WorldHealthLanes{};
+  // The exact solve's working storage, per thread (Step refused kExact where
+  // the plan cannot take it).
+  const bool exact = params.solver == JointSolver::kExact && constraint_count != 0;
+  thread_local ExactScratch scratch;
+  if (exact) scratch.Fit(plan);
 
   for (int substep = 0; substep < params.substeps; ++substep) {
     // Jolt: the dt ratio (0 without warm start) in the first substep only;
@@ -203,7 +212,10 @@ bool StepBlockWith(const StepPlan& plan, std::byte* block, const std::byte* next
     }
     clock.Lap(StepPhase::kForces);
 
-    if (constraint_count != 0) {
+    if (exact) {
+      ExactSolveVelocity(plan, block, scratch);
+      clock.Lap(StepPhase::kVelocity);
+    } else if (constraint_count != 0) {
       for_each_constraint([&](const ConstraintBlock& c) { SetupConstraint(c, step); });
       clock.Lap(StepPhase::kSetup);
       for_each_constraint([&](const ConstraintBlock& c) { WarmStartConstraint(c, step); });
@@ -228,7 +240,11 @@ bool StepBlockWith(const StepPlan& plan, std::byte* block, const std::byte* next
     }
     clock.Lap(StepPhase::kIntegration);
 
-    if (constraint_count != 0) {
+    if (exact) {
+      ExactSolvePosition(plan, block, scratch, params.position_iterations,
+                         params.exact_tolerance);
+      clock.Lap(StepPhase::kPosition);
+    } else if (constraint_count != 0) {
       for (int iteration = 0; iteration < params.position_iterations; ++iteration) {
         bool applied = false;
         for_each_constraint(

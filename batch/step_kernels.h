@@ -22,6 +22,8 @@ struct StepParams {
   float baumgarte;
   Float3 gravity;
   bool gyroscopic;  // StepSettings::gyroscopic
+  JointSolver solver;     // kExact: batch/exact_solve-inl.h (the plan allows it)
+  float exact_tolerance;  // m
 };
 
 struct StepKernels {

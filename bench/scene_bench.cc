@@ -18,6 +18,8 @@
 //       time per world-step is velocity iterations 2 to 10 as they run at the
 //       spec's settings, so the velocity phase gets its own flop rate (flops
 //       of the same difference, counted) and SIMD efficiency;
+//   exact/<scene>/worlds:4096/threads:1   JointSolver::kExact (scenes of ball
+//       joints: the chains), 10 Newton position steps at most;
 //   reference/<scene>/worlds:64           reference::World<float>, one world
 //       at a time, 64 worlds.
 // The scene's actions (cartpole: a random force on every cart; ragdoll:
@@ -59,6 +61,7 @@
 #include <string>
 #include <vector>
 
+#include "batch/plan.h"
 #include "manyworlds/batch.h"
 #include "manyworlds/scene.h"
 #include "manyworlds/scenes.h"
@@ -332,6 +335,22 @@ void RegisterAll() {
                                        RunBatchWithFlops(state, name, id, worlds, threads);
                                      })
             ->UseRealTime();
+        if (worlds == kTableWorlds && threads == 1 &&
+            CompilePlan(MakeReferenceScene(id)).exact.available()) {
+          // The exact joint solve right after Gauss-Seidel (same load), at the
+          // settings docs/stepping.md measures: 10 Newton steps at most.
+          const std::string exact =
+              "exact/" + id + "/worlds:" + std::to_string(worlds) + "/threads:1";
+          StepSettings settings;
+          settings.solver = JointSolver::kExact;
+          settings.position_iterations = 10;
+          benchmark::RegisterBenchmark(exact.c_str(),
+                                       [exact, id, settings](benchmark::State& state) {
+                                         RunBatch(state, exact, id, kTableWorlds, 1, 0,
+                                                  2.0 * (1ull << 30), settings);
+                                       })
+              ->UseRealTime();
+        }
         if (worlds == kTableWorlds && threads == 1) {
           const std::string scalar = ScalarName(id);
           benchmark::RegisterBenchmark(scalar.c_str(),

@@ -106,6 +106,10 @@ void BindEnums(py::module_& m) {
       .value("ROTATION_Y", SixDofAxis::kRotationY)
       .value("ROTATION_Z", SixDofAxis::kRotationZ);
 
+  py::enum_<JointSolver>(m, "JointSolver", "How a step solves the scene's joints.")
+      .value("GAUSS_SEIDEL", JointSolver::kGaussSeidel, "Jolt's iterations (the default)")
+      .value("EXACT", JointSolver::kExact,
+             "ball-joint scenes: all joints at once, Newton position steps (docs/stepping.md)");
   py::enum_<UnhealthyWorlds>(m, "UnhealthyWorlds", "What a step does with the worlds it flags.")
       .value("KEEP", UnhealthyWorlds::kKeep, "leave them flagged until reset")
       .value("RESET", UnhealthyWorlds::kReset, "reset them to the scene's initial state");
@@ -191,7 +195,11 @@ void BindStepAndBatchOptions(py::module_& m) {
   DefArray(step, "gravity", &StepSettings::gravity, "m/s^2");
   step.def_readwrite("unhealthy_worlds", &StepSettings::unhealthy_worlds)
       .def_readwrite("gyroscopic", &StepSettings::gyroscopic,
-                     "opt-in implicit gyroscopic term (off: Jolt's integration)");
+                     "opt-in implicit gyroscopic term (off: Jolt's integration)")
+      .def_readwrite("solver", &StepSettings::solver,
+                     "GAUSS_SEIDEL (Jolt's) or EXACT (position_iterations: most Newton steps)")
+      .def_readwrite("exact_tolerance", &StepSettings::exact_tolerance,
+                     "m: EXACT's Newton steps stop at this joint gap");
 
   py::class_<BatchOptions> options(m, "BatchOptions", "How a Batch runs its worlds.");
   DefKeywordConstructors(options);

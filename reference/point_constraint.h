@@ -51,6 +51,9 @@ class PointConstraint {
   }
 
   const PointPart<T>& point_part() const { return point_; }
+  // The anchors in each body's COM space (the exact solve reads them).
+  const Vec3<T>& local_point1() const { return local_point1_; }
+  const Vec3<T>& local_point2() const { return local_point2_; }
 
  private:
   std::size_t body1_, body2_;

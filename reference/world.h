@@ -49,6 +49,7 @@
 #include "reference/body.h"
 #include "reference/cone_constraint.h"
 #include "reference/distance_constraint.h"
+#include "reference/exact_solve.h"
 #include "reference/fixed_constraint.h"
 #include "reference/gear_constraint.h"
 #include "reference/gyroscopic.h"
@@ -358,8 +359,36 @@ class World {
         constraint);
   }
 
+  // JointSolver::kExact (reference/exact_solve.h): ball joints only, on
+  // bodies without restricted degrees of freedom (what the batch's plan takes).
+  ExactJointSolve<T> ExactSolve() {
+    std::vector<const PointConstraint<T>*> joints;
+    for (std::size_t index = 0; index < constraints_.size(); ++index) {
+      const auto* joint = std::get_if<PointConstraint<T>>(&constraints_[index]);
+      if (joint == nullptr) throw std::invalid_argument(NotA("point (exact solve)", index));
+      joints.push_back(joint);
+    }
+    for (std::size_t index = 0; index < bodies_.size(); ++index) {
+      const Body<T>& body = bodies_[index];
+      if (body.IsDynamic() && (body.translation_mask != Vec3<T>::Ones() ||
+                               body.rotation_mask != Vec3<T>::Ones())) {
+        throw std::invalid_argument("reference::World: body " + std::to_string(index) +
+                                    " restricts its DOFs (exact solve)");
+      }
+    }
+    return ExactJointSolve<T>(bodies_, std::move(joints));
+  }
+
   void StepOnce(const StepSettings& settings, T dt, T warm_start_ratio) {
     ApplyForcesAndDamping(dt, ToVec3<T>(settings.gravity), settings.gyroscopic);
+
+    if (settings.solver == JointSolver::kExact && !constraints_.empty()) {
+      ExactJointSolve<T> exact = ExactSolve();
+      exact.SolveVelocity();
+      Integrate(dt);
+      exact.SolvePosition(settings.position_iterations, T(settings.exact_tolerance));
+      return;
+    }
 
     std::vector<Constraint*> solved;
     for (Constraint& constraint : constraints_) {

@@ -44,7 +44,8 @@ Options RunOptions(int argc, char** argv) {
   return Options(argc, argv,
                  {"--scene", "--worlds", "--steps", "--threads", "--substeps",
                   "--velocity-iterations", "--position-iterations", "--warmup", "--seed",
-                  "--mass-range-limit", kRecordOption, kRecordWorldsOption},
+                  "--mass-range-limit", "--solver", "--exact-tolerance", kRecordOption,
+                  kRecordWorldsOption},
                  {"--profile"});
 }
 
@@ -78,6 +79,22 @@ RunSetup ParseRunSetup(const Options& options) {
   setup.settings.velocity_iterations =
       int(options.Number("--velocity-iterations", 10, 0, 10'000));
   setup.settings.position_iterations = int(options.Number("--position-iterations", 2, 0, 10'000));
+  const std::string solver = options.Text("--solver", "gauss-seidel");
+  if (solver == "exact") {
+    setup.settings.solver = JointSolver::kExact;
+  } else if (solver != "gauss-seidel") {
+    throw UsageError("--solver = '" + solver + "': accepted gauss-seidel (Jolt's, the default) "
+                     "and exact");
+  }
+  if (options.Has("--exact-tolerance")) {
+    const std::string text = options.Text("--exact-tolerance");
+    char* end = nullptr;
+    const double tolerance = std::strtod(text.c_str(), &end);
+    if (text.empty() || *end != '\0' || !(tolerance > 0.0 && tolerance <= 1.0)) {
+      throw UsageError("--exact-tolerance = '" + text + "': a length in m in (0, 1]");
+    }
+    setup.settings.exact_tolerance = float(tolerance);
+  }
   return setup;
 }
 

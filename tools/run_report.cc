@@ -93,9 +93,15 @@ void PrintRunReport(const Batch& batch, const SceneActions& actions, const RunFa
               batch.SimdLanes());
   std::printf("precision:            float\n");
   std::printf("mass-range limit:     %s\n", facts.mass_range.c_str());
-  std::printf("iterations:           %d velocity, %d position, %d substep(s), Baumgarte %g\n",
-              settings.velocity_iterations, settings.position_iterations, settings.substeps,
-              double(settings.baumgarte));
+  if (settings.solver == JointSolver::kExact) {
+    std::printf("solver:               exact: joints solved at once, up to %d Newton position "
+                "steps to %g m, %d substep(s)\n",
+                settings.position_iterations, double(settings.exact_tolerance), settings.substeps);
+  } else {
+    std::printf("iterations:           %d velocity, %d position, %d substep(s), Baumgarte %g\n",
+                settings.velocity_iterations, settings.position_iterations, settings.substeps,
+                double(settings.baumgarte));
+  }
   std::printf("dt:                   %.6g s per step, gravity (%g, %g, %g) m/s^2\n",
               double(settings.delta_time), double(settings.gravity[0]),
               double(settings.gravity[1]), double(settings.gravity[2]));

@@ -73,6 +73,22 @@ inline constexpr int kMaxIterations = 1000;  // velocity and position each
 // BatchOptions::threads above this is refused (TBB cannot make such arenas).
 inline constexpr int kMaxThreads = 4096;
 
+// How a step solves the scene's joints (docs/stepping.md, "The exact solve").
+enum class JointSolver : std::uint8_t {
+  // Jolt's: every constraint's parts in scene order, velocity_iterations
+  // then position_iterations Gauss-Seidel sweeps with Baumgarte's factor.
+  kGaussSeidel,
+  // For scenes of ball joints (point constraints): each substep solves all
+  // joints' velocity rows at once, exactly (a sparse LDL^T of J M^-1 J^T
+  // whose elimination order and fill the plan fixes), then projects the
+  // positions back onto the joints by Newton steps of the same system until
+  // every joint of the world is within exact_tolerance, at most
+  // position_iterations steps. Scenes with other constraint types, or with
+  // bodies whose degrees of freedom are restricted, are refused by name.
+  kExact,
+};
+const char* JointSolverName(JointSolver solver);  // "gauss_seidel", "exact"
+
 // Jolt's PhysicsSettings that matter to constraint-only worlds (spec 4.2).
 struct StepSettings {
   float delta_time = 1.0f / 60.0f;  // s, of the whole step
@@ -89,6 +105,10 @@ struct StepSettings {
   // reference/gyroscopic.h). Jolt leaves it out, so a body spun about its
   // intermediate axis never flips (docs/stability.md).
   bool gyroscopic = false;
+  JointSolver solver = JointSolver::kGaussSeidel;
+  // kExact: a world's position steps stop once every joint's anchors are
+  // this close (m); velocity_iterations, baumgarte and warm_start are not used.
+  float exact_tolerance = 1e-5f;
 };
 
 // A world's constraint position error split by unit (Batch::MaxConstraintErrorSplit).

@@ -503,3 +503,19 @@ def test_fused_drive_targets_give_the_bits_of_the_setters():
         fused.step(target_orientations=q)
     with pytest.raises(ValueError, match=r"target_translations\[1\]: expected shape"):
         fused.step(target_translations={1: q})
+
+
+def test_exact_solve_closes_chain16_joints_and_refuses_a_slider():
+    # The exact joint solve (docs/stepping.md): chain16's joints within the
+    # tolerance after every step, where Gauss-Seidel leaves centimetres.
+    settings = mw.StepSettings(solver=mw.JointSolver.EXACT, position_iterations=10)
+    assert settings.exact_tolerance == pytest.approx(1e-5)
+    chain = mw.Batch(mw.make_scene("chain16"), 4, threads=1)
+    for _ in range(60):
+        chain.step(settings)
+        assert chain.max_constraint_errors().max() <= settings.exact_tolerance + 2e-6
+    cartpole = mw.Batch(mw.make_scene("cartpole"), 4, threads=1)
+    before = cartpole.get_state()
+    with pytest.raises(mw.SceneError, match="rail"):
+        cartpole.step(settings)
+    assert_same_bits(cartpole.get_state(), before)

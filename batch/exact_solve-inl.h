@@ -1,0 +1,399 @@
+// The exact joint solve across worlds (JointSolver::kExact): all ball joints
+// of a world solved at once, each block's 16 lanes with the same
+// instructions. The plan (batch/exact_plan.h) fixes the elimination order.
+//
+// Unknowns: one impulse lambda_k (3 rows) per joint k. For joint k on body b
+// with lever arm r (world, COM to anchor) and side s = -1 (body 1) or +1
+// (body 2), J_kb = s [E, -[r]x], so with A = I_b^-1 [r]x (world inertia)
+//
+//   K_kk = sum over its dynamic bodies of  m^-1 E + [r]x I^-1 [r]x^T
+//   K_kl = sum over shared dynamic bodies of  s_k s_l (m^-1 E - [r_k]x A_l),
+//          column c of -[r_k]x A_l being (column c of A_l) x r_k.
+//
+// Block LDL^T, right-looking, in the plan's order p = 0, 1, ...:
+//   D_p = K_pp (updated),  W_pi = D_p^-1 K_pi  for each later neighbour i,
+//   K_ij -= K_pi^T W_pj    for each pair i <= j of p's later neighbours.
+// Solve K lambda = b:  forward  b_i -= W_pi^T b_p  (p in order),
+//                      back     lambda_p = D_p^-1 b_p - sum_i W_pi lambda_i
+//                               (p in reverse order).
+// K is symmetric positive definite when every joint has a dynamic body and
+// no two joints' rows are dependent; a singular pivot (D_p not invertible in
+// a lane) gives that joint zero impulse in that lane, as Jolt deactivates a
+// point part whose K cannot be inverted.
+//
+// Velocity phase (replaces setup, warm start and the velocity iterations):
+//   b = -J v, lambda = K^-1 b, applied to both bodies: J v = 0 afterwards.
+// Position phase (replaces the Baumgarte iterations): Newton steps on C = 0,
+//   C_k = x2 + r2 - x1 - r1 at the current poses (K re-assembled there),
+//   lambda = K^-1 (-C), applied as position and rotation steps, in each world
+//   until every |C_k| <= tolerance (at most `passes` steps). A world that
+//   has converged is left exactly as it is while others continue, so what a
+//   world does never depends on the other worlds of its block.
+
+#if defined(MANYWORLDS_BATCH_EXACT_SOLVE_INL_H_) == defined(HWY_TARGET_TOGGLE)
+#ifdef MANYWORLDS_BATCH_EXACT_SOLVE_INL_H_
+#undef MANYWORLDS_BATCH_EXACT_SOLVE_INL_H_
+#else
+#define MANYWORLDS_BATCH_EXACT_SOLVE_INL_H_
+#endif
+
+#include <cstddef>
+#include <vector>
+
+#include "batch/constraint_block.h"
+#include "batch/exact_plan.h"
+#include "kernels/lane_math-inl.h"
+#include "kernels/point-inl.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace manyworlds {
+namespace HWY_NAMESPACE {
+
+// Working storage of one block's solve, kept per thread between blocks.
+struct ExactScratch {
+  std::vector<Sym33Lanes> diagonal;  // K_pp, then D_p^-1
+  std::vector<Mat33Lanes> blocks;    // K_pi, then W_pi (plan's block order)
+  std::vector<Mat33Lanes> w;         // W of the position being eliminated
+  std::vector<Vec3Lanes> rhs;        // b, then lambda
+  std::vector<Vec3Lanes> translation, rotation;  // per body: one Newton step
+  LaneArray moving;                  // position phase: 1 where still correcting
+
+  void Fit(const StepPlan& step_plan) {
+    const ExactSolvePlan& plan = step_plan.exact;
+    translation.resize(step_plan.bodies.size());
+    rotation.resize(step_plan.bodies.size());
+    diagonal.resize(plan.joint_count());
+    blocks.resize(plan.blocks.size());
+    rhs.resize(plan.joint_count());
+    std::size_t widest = 0;
+    for (const auto& later : plan.later) widest = later.size() > widest ? later.size() : widest;
+    w.resize(widest);
+  }
+};
+
+namespace exact {
+
+HWY_INLINE ConstraintBlock JointAt(const StepPlan& plan, std::byte* block, std::size_t position) {
+  return ConstraintInBlock(plan, plan.exact.order[position], block);
+}
+
+// a^T b.
+HWY_INLINE Mat33 TransposeTimes(const Mat33& a, const Mat33& b) {
+  Mat33 product;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      LaneVec sum = hn::Mul(a.m[0][i], b.m[0][j]);
+      sum = hn::MulAdd(a.m[1][i], b.m[1][j], sum);
+      product.m[i][j] = hn::MulAdd(a.m[2][i], b.m[2][j], sum);
+    }
+  }
+  return product;
+}
+
+HWY_INLINE Vec3 TransposeTimes(const Mat33& a, const Vec3& v) {
+  return {hn::MulAdd(a.m[2][0], v.z, hn::MulAdd(a.m[1][0], v.y, hn::Mul(a.m[0][0], v.x))),
+          hn::MulAdd(a.m[2][1], v.z, hn::MulAdd(a.m[1][1], v.y, hn::Mul(a.m[0][1], v.x))),
+          hn::MulAdd(a.m[2][2], v.z, hn::MulAdd(a.m[1][2], v.y, hn::Mul(a.m[0][2], v.x)))};
+}
+
+HWY_INLINE Mat33 Difference(const Mat33& a, const Mat33& b) {
+  Mat33 d;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) d.m[i][j] = hn::Sub(a.m[i][j], b.m[i][j]);
+  }
+  return d;
+}
+
+// The upper triangle of a - b^T c (b^T c is symmetric here in exact arithmetic;
+// only the upper triangle is formed, so the stored K stays symmetric).
+HWY_INLINE Sym33 SubTransposeTimes(const Sym33& a, const Mat33& b, const Mat33& c) {
+  const auto entry = [&](int i, int j) {
+    LaneVec sum = hn::Mul(b.m[0][i], c.m[0][j]);
+    sum = hn::MulAdd(b.m[1][i], c.m[1][j], sum);
+    return hn::MulAdd(b.m[2][i], c.m[2][j], sum);
+  };
+  return {hn::Sub(a.xx, entry(0, 0)), hn::Sub(a.xy, entry(0, 1)), hn::Sub(a.xz, entry(0, 2)),
+          hn::Sub(a.yy, entry(1, 1)), hn::Sub(a.yz, entry(1, 2)), hn::Sub(a.zz, entry(2, 2))};
+}
+
+// The lever arm and I^-1 [r]x of joint k on one of its sides, as the point
+// part caches them (zero I^-1 [r]x for a body that is not dynamic).
+HWY_INLINE void Side(const PointLanes& part, bool body2, std::size_t offset, Vec3& r, Mat33& a) {
+  r = LoadVec3(body2 ? part.r2 : part.r1, offset);
+  a = LoadMat33(body2 ? part.inv_i2_r2_cross : part.inv_i1_r1_cross, offset);
+}
+
+// K at the bodies' current poses: every joint's lever arms and I^-1 [r]x
+// (cached in its point part, which the impulses are applied through), the
+// diagonal blocks and the couplings through shared bodies.
+inline void AssembleK(const StepPlan& plan, std::byte* block, ExactScratch& scratch) {
+  const ExactSolvePlan& exact = plan.exact;
+  for (std::size_t p = 0; p < exact.joint_count(); ++p) {
+    const ConstraintBlock c = JointAt(plan, block, p);
+    auto& joint = c.Main<PointConstraintLanes>();
+    ForEachChunk([&](std::size_t offset) {
+      const BodyPair& bodies = c.bodies;
+      const Vec3 r1 = Rotate(LoadQuat(bodies.body1->rotation, offset),
+                             LoadVec3(joint.anchors.r1_local, offset));
+      const Vec3 r2 = Rotate(LoadQuat(bodies.body2->rotation, offset),
+                             LoadVec3(joint.anchors.r2_local, offset));
+      Sym33 k = ZeroSym33();
+      Mat33 a1 = ZeroMat33(), a2 = ZeroMat33();
+      if (bodies.motion1 == MotionType::kDynamic) {
+        a1 = point::InverseInertiaTimesCross(BodyInverseInertia(*bodies.body1, offset), r1);
+        point::AddBodyToInverseEffectiveMass(Load(bodies.body1->inv_mass, offset), a1, r1, k);
+      }
+      if (bodies.motion2 == MotionType::kDynamic) {
+        a2 = point::InverseInertiaTimesCross(BodyInverseInertia(*bodies.body2, offset), r2);
+        point::AddBodyToInverseEffectiveMass(Load(bodies.body2->inv_mass, offset), a2, r2, k);
+      }
+      StoreVec3(r1, joint.point.r1, offset);
+      StoreVec3(r2, joint.point.r2, offset);
+      StoreMat33(a1, joint.point.inv_i1_r1_cross, offset);
+      StoreMat33(a2, joint.point.inv_i2_r2_cross, offset);
+      StoreSym33(k, scratch.diagonal[p], offset);
+    });
+  }
+  for (Mat33Lanes& b : scratch.blocks) {
+    ForEachChunk([&](std::size_t offset) { StoreMat33(ZeroMat33(), b, offset); });
+  }
+  for (const ExactSolvePlan::SharedBody& shared : exact.shared_bodies) {
+    const PointLanes& first = JointAt(plan, block, shared.first).Main<PointConstraintLanes>().point;
+    const PointLanes& second =
+        JointAt(plan, block, shared.second).Main<PointConstraintLanes>().point;
+    const BodyLanes& body = BodyAt(plan, block, shared.body);
+    const bool same_sign = shared.first_is_body2 == shared.second_is_body2;
+    Mat33Lanes& out = scratch.blocks[shared.block];
+    ForEachChunk([&](std::size_t offset) {
+      Vec3 r_first, r_second;
+      Mat33 a_first, a_second;
+      Side(first, shared.first_is_body2, offset, r_first, a_first);
+      Side(second, shared.second_is_body2, offset, r_second, a_second);
+      const LaneVec inv_mass = Load(body.inv_mass, offset);
+      Mat33 coupling = LoadMat33(out, offset);
+      for (int column = 0; column < 3; ++column) {
+        Vec3 term = Cross(Column(a_second, column), r_first);
+        if (column == 0) term.x = hn::Add(term.x, inv_mass);
+        if (column == 1) term.y = hn::Add(term.y, inv_mass);
+        if (column == 2) term.z = hn::Add(term.z, inv_mass);
+        if (!same_sign) term = Neg(term);
+        coupling.m[0][column] = hn::Add(coupling.m[0][column], term.x);
+        coupling.m[1][column] = hn::Add(coupling.m[1][column], term.y);
+        coupling.m[2][column] = hn::Add(coupling.m[2][column], term.z);
+      }
+      StoreMat33(coupling, out, offset);
+    });
+  }
+}
+
+// LDL^T in place: diagonal -> D^-1, blocks -> W.
+inline void Factor(const ExactSolvePlan& exact, ExactScratch& scratch) {
+  for (std::size_t p = 0; p < exact.joint_count(); ++p) {
+    const auto& later = exact.later[p];
+    ForEachChunk([&](std::size_t offset) {
+      LaneMask invertible;
+      const Sym33 d_inv = InverseSym33(LoadSym33(scratch.diagonal[p], offset), invertible);
+      StoreSym33(d_inv, scratch.diagonal[p], offset);
+      for (std::size_t n = 0; n < later.size(); ++n) {
+        StoreMat33(Multiply(d_inv, LoadMat33(scratch.blocks[later[n].block], offset)),
+                   scratch.w[n], offset);
+      }
+      for (const ExactSolvePlan::Update& update : exact.updates[p]) {
+        const Mat33 k_pi = LoadMat33(scratch.blocks[later[update.left].block], offset);
+        const Mat33 w_pj = LoadMat33(scratch.w[update.right], offset);
+        if (update.target == ExactSolvePlan::kDiagonal) {
+          Sym33Lanes& k_ii = scratch.diagonal[later[update.left].position];
+          StoreSym33(SubTransposeTimes(LoadSym33(k_ii, offset), k_pi, w_pj), k_ii, offset);
+        } else {
+          Mat33Lanes& k_ij = scratch.blocks[update.target];
+          StoreMat33(Difference(LoadMat33(k_ij, offset), TransposeTimes(k_pi, w_pj)), k_ij, offset);
+        }
+      }
+      for (std::size_t n = 0; n < later.size(); ++n) {
+        StoreMat33(LoadMat33(scratch.w[n], offset), scratch.blocks[later[n].block], offset);
+      }
+    });
+  }
+}
+
+// rhs -> K^-1 rhs with the factors of Factor.
+inline void Solve(const ExactSolvePlan& exact, ExactScratch& scratch) {
+  const std::size_t joints = exact.joint_count();
+  for (std::size_t p = 0; p < joints; ++p) {
+    ForEachChunk([&](std::size_t offset) {
+      const Vec3 b_p = LoadVec3(scratch.rhs[p], offset);
+      for (const ExactSolvePlan::Neighbour& n : exact.later[p]) {
+        Vec3Lanes& b_i = scratch.rhs[n.position];
+        StoreVec3(Sub(LoadVec3(b_i, offset),
+                             TransposeTimes(LoadMat33(scratch.blocks[n.block], offset), b_p)),
+                  b_i, offset);
+      }
+    });
+  }
+  for (std::size_t p = joints; p-- > 0;) {
+    ForEachChunk([&](std::size_t offset) {
+      Vec3 lambda = Multiply(LoadSym33(scratch.diagonal[p], offset), LoadVec3(scratch.rhs[p], offset));
+      for (const ExactSolvePlan::Neighbour& n : exact.later[p]) {
+        lambda = Sub(lambda, Multiply(LoadMat33(scratch.blocks[n.block], offset),
+                                             LoadVec3(scratch.rhs[n.position], offset)));
+      }
+      StoreVec3(lambda, scratch.rhs[p], offset);
+    });
+  }
+}
+
+// The anchors' separation C = p2 - p1 with the lever arms AssembleK cached.
+HWY_INLINE Vec3 Separation(const ConstraintBlock& c, std::size_t offset) {
+  const PointLanes& part = c.Main<PointConstraintLanes>().point;
+  const Vec3 p1 = Add(LoadVec3(c.bodies.body1->position, offset), LoadVec3(part.r1, offset));
+  const Vec3 p2 = Add(LoadVec3(c.bodies.body2->position, offset), LoadVec3(part.r2, offset));
+  return Sub(p2, p1);
+}
+
+// The angular step of the impulse lambda at lever arm r: I^-1 (r x lambda),
+// the torque first as the dense reference forms J^T lambda.
+HWY_INLINE Vec3 AngularStep(const BodyLanes& body, const Vec3& r, const Vec3& lambda,
+                            std::size_t offset) {
+  return Multiply(BodyInverseInertia(body, offset), Cross(r, lambda));
+}
+
+// Adds the position and rotation steps of lambda on one dynamic body (sign
+// -1 for a joint's body 1) to that body's sums for this Newton step.
+HWY_INLINE void AddBodyStep(const BodyLanes& body, LaneVec sign, const Vec3& r,
+                            const Vec3& lambda, Vec3Lanes& translation, Vec3Lanes& rotation,
+                            std::size_t offset) {
+  const Vec3 signed_lambda = Scale(lambda, sign);
+  StoreVec3(MulAdd(signed_lambda, Load(body.inv_mass, offset), LoadVec3(translation, offset)),
+            translation, offset);
+  StoreVec3(Add(LoadVec3(rotation, offset), AngularStep(body, r, signed_lambda, offset)),
+            rotation, offset);
+}
+
+}  // namespace exact
+
+// Velocity phase: J v = 0 for every joint at once (see the header comment).
+// The impulses are kept as the point parts' total_lambda.
+inline void ExactSolveVelocity(const StepPlan& plan, std::byte* block, ExactScratch& scratch) {
+  const ExactSolvePlan& exact = plan.exact;
+  exact::AssembleK(plan, block, scratch);
+  for (std::size_t p = 0; p < exact.joint_count(); ++p) {
+    const ConstraintBlock c = exact::JointAt(plan, block, p);
+    const PointLanes& part = c.Main<PointConstraintLanes>().point;
+    ForEachChunk([&](std::size_t offset) {
+      // b = -J v = v1 + w1 x r1 ... written as the point part's s.
+      Vec3 s = ZeroVec3();
+      if (c.bodies.motion1 != MotionType::kStatic) {
+        s = Sub(LoadVec3(c.bodies.body1->linear_velocity, offset),
+                       Cross(LoadVec3(part.r1, offset),
+                             LoadVec3(c.bodies.body1->angular_velocity, offset)));
+      }
+      if (c.bodies.motion2 != MotionType::kStatic) {
+        s = Add(Sub(s, LoadVec3(c.bodies.body2->linear_velocity, offset)),
+                Cross(LoadVec3(part.r2, offset), LoadVec3(c.bodies.body2->angular_velocity, offset)));
+      }
+      StoreVec3(s, scratch.rhs[p], offset);
+    });
+  }
+  exact::Factor(exact, scratch);
+  exact::Solve(exact, scratch);
+  for (std::size_t p = 0; p < exact.joint_count(); ++p) {
+    const ConstraintBlock c = exact::JointAt(plan, block, p);
+    PointLanes& part = c.Main<PointConstraintLanes>().point;
+    ForEachChunk([&](std::size_t offset) {
+      const Vec3 lambda = LoadVec3(scratch.rhs[p], offset);
+      StoreVec3(lambda, part.persistent.total_lambda, offset);
+      if (c.bodies.motion1 == MotionType::kDynamic) {
+        BodyLanes& body = *c.bodies.body1;
+        AddVelocityStep(body, Scale(lambda, hn::Neg(Load(body.inv_mass, offset))),
+                        Neg(exact::AngularStep(body, LoadVec3(part.r1, offset), lambda, offset)),
+                        offset);
+      }
+      if (c.bodies.motion2 == MotionType::kDynamic) {
+        BodyLanes& body = *c.bodies.body2;
+        AddVelocityStep(body, Scale(lambda, Load(body.inv_mass, offset)),
+                        exact::AngularStep(body, LoadVec3(part.r2, offset), lambda, offset),
+                        offset);
+      }
+    });
+  }
+}
+
+// Position phase: Newton steps until each world's joints are within
+// `tolerance`, at most `passes`. Returns the number of steps taken (by the
+// slowest world of the block).
+inline int ExactSolvePosition(const StepPlan& plan, std::byte* block, ExactScratch& scratch,
+                              int passes, float tolerance) {
+  const ExactSolvePlan& exact = plan.exact;
+  const LaneVec tolerance_squared = Splat(tolerance * tolerance);
+  int pass = 0;
+  for (; pass < passes; ++pass) {
+    exact::AssembleK(plan, block, scratch);
+    ForEachChunk([&](std::size_t offset) { Store(Zero(), scratch.moving, offset); });
+    for (std::size_t p = 0; p < exact.joint_count(); ++p) {
+      const ConstraintBlock c = exact::JointAt(plan, block, p);
+      ForEachChunk([&](std::size_t offset) {
+        const Vec3 separation = exact::Separation(c, offset);
+        StoreVec3(Neg(separation), scratch.rhs[p], offset);
+        // NaN separations count as not converged (the comparison is false).
+        const LaneMask within = hn::Le(LengthSquared(separation), tolerance_squared);
+        const LaneVec moving = hn::IfThenZeroElse(within, Splat(1.0f));
+        Store(hn::Max(Load(scratch.moving, offset), moving), scratch.moving, offset);
+      });
+    }
+    bool any_moving = false;
+    ForEachChunk([&](std::size_t offset) {
+      any_moving |= AnyLane(hn::Ne(Load(scratch.moving, offset), Zero()));
+    });
+    if (!any_moving) break;
+    exact::Factor(exact, scratch);
+    exact::Solve(exact, scratch);
+    // One Newton step moves each body once, by the sum of its joints'
+    // steps (as J^T lambda): rotation steps applied joint after joint would
+    // compose, and a link's two nearly opposite turns would not cancel.
+    for (Vec3Lanes& sum : scratch.translation) {
+      ForEachChunk([&](std::size_t offset) { StoreVec3(ZeroVec3(), sum, offset); });
+    }
+    for (Vec3Lanes& sum : scratch.rotation) {
+      ForEachChunk([&](std::size_t offset) { StoreVec3(ZeroVec3(), sum, offset); });
+    }
+    for (std::size_t p = 0; p < exact.joint_count(); ++p) {
+      const ConstraintBlock c = exact::JointAt(plan, block, p);
+      const ConstraintPlan& joint = plan.constraints[exact.order[p]];
+      const PointLanes& part = c.Main<PointConstraintLanes>().point;
+      ForEachChunk([&](std::size_t offset) {
+        const Vec3 lambda = LoadVec3(scratch.rhs[p], offset);
+        if (c.bodies.motion1 == MotionType::kDynamic) {
+          exact::AddBodyStep(*c.bodies.body1, Splat(-1.0f), LoadVec3(part.r1, offset), lambda,
+                             scratch.translation[joint.body1], scratch.rotation[joint.body1],
+                             offset);
+        }
+        if (c.bodies.motion2 == MotionType::kDynamic) {
+          exact::AddBodyStep(*c.bodies.body2, Splat(1.0f), LoadVec3(part.r2, offset), lambda,
+                             scratch.translation[joint.body2], scratch.rotation[joint.body2],
+                             offset);
+        }
+      });
+    }
+    for (std::size_t b = 0; b < plan.bodies.size(); ++b) {
+      if (plan.bodies[b].motion != MotionType::kDynamic) continue;
+      BodyLanes& body = BodyAt(plan, block, b);
+      ForEachChunk([&](std::size_t offset) {
+        // Worlds that have converged keep every bit.
+        const LaneMask moving = hn::Ne(Load(scratch.moving, offset), Zero());
+        const Vec3 x = LoadVec3(body.position, offset);
+        const Quat q = LoadQuat(body.rotation, offset);
+        const Vec3 moved = Add(x, LoadVec3(scratch.translation[b], offset));
+        const Quat turned = AddRotationStep(q, LoadVec3(scratch.rotation[b], offset));
+        StoreVec3(Select(moving, moved, x), body.position, offset);
+        StoreQuat(Select(moving, turned, q), body.rotation, offset);
+      });
+    }
+  }
+  return pass;
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace manyworlds
+HWY_AFTER_NAMESPACE();
+
+#endif  // MANYWORLDS_BATCH_EXACT_SOLVE_INL_H_
