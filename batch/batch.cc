@@ -153,6 +153,7 @@ void Batch::Impl::Step(const StepSettings& settings, std::stop_token stop, const
   params.gyroscopic = settings.gyroscopic;
   params.solver = settings.solver;
   params.exact_tolerance = settings.exact_tolerance;
+  params.exact_stiffness = settings.exact_geometric_stiffness * substep_dt;
   previous_substep_dt_ = substep_dt;
 
   const std::size_t grain =

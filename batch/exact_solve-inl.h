@@ -23,6 +23,8 @@
 //
 // Velocity phase (replaces setup, warm start and the velocity iterations):
 //   b = -J v, lambda = K^-1 b, applied to both bodies: J v = 0 afterwards.
+//   M's rotational blocks carry the joints' geometric stiffness from the last
+//   substep's impulses (LeverArmsAndInertia), taken implicitly.
 // Position phase (replaces the Baumgarte iterations): Newton steps on C = 0,
 //   C_k = x2 + r2 - x1 - r1 at the current poses (K re-assembled there),
 //   lambda = K^-1 (-C), applied as position and rotation steps, in each world
@@ -56,12 +58,16 @@ struct ExactScratch {
   std::vector<Mat33Lanes> w;         // W of the position being eliminated
   std::vector<Vec3Lanes> rhs;        // b, then lambda
   std::vector<Vec3Lanes> translation, rotation;  // per body: one Newton step
+  std::vector<Sym33Lanes> inverse_inertia;        // per dynamic body, this solve's
+  std::vector<Sym33Lanes> stiffness;              // per dynamic body: G
   LaneArray moving;                  // position phase: 1 where still correcting
 
   void Fit(const StepPlan& step_plan) {
     const ExactSolvePlan& plan = step_plan.exact;
     translation.resize(step_plan.bodies.size());
     rotation.resize(step_plan.bodies.size());
+    inverse_inertia.resize(step_plan.bodies.size());
+    stiffness.resize(step_plan.bodies.size());
     diagonal.resize(plan.joint_count());
     blocks.resize(plan.blocks.size());
     rhs.resize(plan.joint_count());
@@ -123,34 +129,123 @@ HWY_INLINE void Side(const PointLanes& part, bool body2, std::size_t offset, Vec
   a = LoadMat33(body2 ? part.inv_i2_r2_cross : part.inv_i1_r1_cross, offset);
 }
 
-// K at the bodies' current poses: every joint's lever arms and I^-1 [r]x
-// (cached in its point part, which the impulses are applied through), the
-// diagonal blocks and the couplings through shared bodies.
-inline void AssembleK(const StepPlan& plan, std::byte* block, ExactScratch& scratch) {
+HWY_INLINE Sym33 UpperTriangle(const Mat33& m) {
+  return {m.m[0][0], m.m[0][1], m.m[0][2], m.m[1][1], m.m[1][2], m.m[2][2]};
+}
+
+HWY_INLINE Mat33 Full(const Sym33& s) {
+  Mat33 m;
+  m.m[0][0] = s.xx, m.m[0][1] = s.xy, m.m[0][2] = s.xz;
+  m.m[1][0] = s.xy, m.m[1][1] = s.yy, m.m[1][2] = s.yz;
+  m.m[2][0] = s.xz, m.m[2][1] = s.yz, m.m[2][2] = s.zz;
+  return m;
+}
+
+// Adds w (E - r r^T / |r|^2) to g: the geometric stiffness of a pull w along
+// r (zero where |r| = 0, where w is zero too).
+HWY_INLINE void AddTransverseStiffness(LaneVec w, const Vec3& r, Sym33& g) {
+  LaneMask nonzero;
+  const LaneVec scale = hn::Mul(w, ReciprocalOrZero(LengthSquared(r), nonzero));
+  g.xx = hn::Add(g.xx, hn::NegMulAdd(hn::Mul(r.x, r.x), scale, w));
+  g.yy = hn::Add(g.yy, hn::NegMulAdd(hn::Mul(r.y, r.y), scale, w));
+  g.zz = hn::Add(g.zz, hn::NegMulAdd(hn::Mul(r.z, r.z), scale, w));
+  g.xy = hn::NegMulAdd(hn::Mul(r.x, r.y), scale, g.xy);
+  g.xz = hn::NegMulAdd(hn::Mul(r.x, r.z), scale, g.xz);
+  g.yz = hn::NegMulAdd(hn::Mul(r.y, r.z), scale, g.yz);
+}
+
+// The lever arms r1, r2 of every joint at the current rotations, and each
+// dynamic body's inverse inertia for this solve: I^-1 at its current
+// rotation, or with `stiffness` > 0 (velocity phase) (I + G)^-1, where G
+// sums over the body's joints  stiffness * max(0, s lambda . r) (E - r^ r^T)
+// with lambda the joint's impulse of the last velocity solve and s = -1 on
+// body 1: the geometric stiffness of the joints' pulls (Tournier et al.,
+// "Stable Constrained Dynamics", 2015), taken implicitly. A slender link
+// pulled hard along its length by a heavy body swings transversally faster
+// than one step can follow explicitly (chain16-r100 comes apart without it
+// at 1 substep); stiffness = dt is the backward-Euler amount of it; only
+// pulls count, pushes would make I + G indefinite. Computed as
+// I^-1 (E + G I^-1)^-1, which needs no inverse of I (a zero inverse inertia
+// stays zero).
+inline void LeverArmsAndInertia(const StepPlan& plan, std::byte* block, ExactScratch& scratch,
+                                float stiffness) {
   const ExactSolvePlan& exact = plan.exact;
   for (std::size_t p = 0; p < exact.joint_count(); ++p) {
     const ConstraintBlock c = JointAt(plan, block, p);
     auto& joint = c.Main<PointConstraintLanes>();
     ForEachChunk([&](std::size_t offset) {
-      const BodyPair& bodies = c.bodies;
-      const Vec3 r1 = Rotate(LoadQuat(bodies.body1->rotation, offset),
-                             LoadVec3(joint.anchors.r1_local, offset));
-      const Vec3 r2 = Rotate(LoadQuat(bodies.body2->rotation, offset),
-                             LoadVec3(joint.anchors.r2_local, offset));
+      StoreVec3(Rotate(LoadQuat(c.bodies.body1->rotation, offset),
+                       LoadVec3(joint.anchors.r1_local, offset)),
+                joint.point.r1, offset);
+      StoreVec3(Rotate(LoadQuat(c.bodies.body2->rotation, offset),
+                       LoadVec3(joint.anchors.r2_local, offset)),
+                joint.point.r2, offset);
+    });
+  }
+  for (std::size_t b = 0; b < plan.bodies.size(); ++b) {
+    if (plan.bodies[b].motion != MotionType::kDynamic) continue;
+    const BodyLanes& body = BodyAt(plan, block, b);
+    ForEachChunk([&](std::size_t offset) {
+      StoreSym33(BodyInverseInertia(body, offset), scratch.inverse_inertia[b], offset);
+      StoreSym33(ZeroSym33(), scratch.stiffness[b], offset);
+    });
+  }
+  if (stiffness <= 0.0f) return;
+  const LaneVec factor = Splat(stiffness);
+  for (std::size_t p = 0; p < exact.joint_count(); ++p) {
+    const ConstraintBlock c = JointAt(plan, block, p);
+    const ConstraintPlan& joint_plan = plan.constraints[exact.order[p]];
+    const PointLanes& part = c.Main<PointConstraintLanes>().point;
+    ForEachChunk([&](std::size_t offset) {
+      const Vec3 lambda = LoadVec3(part.persistent.total_lambda, offset);
+      const auto add = [&](std::size_t body, const Vec3Lanes& lever, bool body2) {
+        const Vec3 r = LoadVec3(lever, offset);
+        const LaneVec pull = body2 ? Dot(lambda, r) : hn::Neg(Dot(lambda, r));
+        Sym33 g = LoadSym33(scratch.stiffness[body], offset);
+        AddTransverseStiffness(hn::Mul(factor, hn::Max(pull, Zero())), r, g);
+        StoreSym33(g, scratch.stiffness[body], offset);
+      };
+      if (c.bodies.motion1 == MotionType::kDynamic) add(joint_plan.body1, part.r1, false);
+      if (c.bodies.motion2 == MotionType::kDynamic) add(joint_plan.body2, part.r2, true);
+    });
+  }
+  for (std::size_t b = 0; b < plan.bodies.size(); ++b) {
+    if (plan.bodies[b].motion != MotionType::kDynamic) continue;
+    ForEachChunk([&](std::size_t offset) {
+      const Sym33 inverse = LoadSym33(scratch.inverse_inertia[b], offset);
+      Mat33 m = Multiply(LoadSym33(scratch.stiffness[b], offset), Full(inverse));
+      for (int i = 0; i < 3; ++i) m.m[i][i] = hn::Add(m.m[i][i], Splat(1.0f));
+      LaneMask invertible;
+      StoreSym33(UpperTriangle(Multiply(inverse, Inverse33(m, invertible))),
+                 scratch.inverse_inertia[b], offset);
+    });
+  }
+}
+
+// K from the lever arms and inverse inertias of LeverArmsAndInertia: every
+// joint's I^-1 [r]x (cached in its point part), the diagonal blocks and the
+// couplings through shared bodies.
+inline void AssembleK(const StepPlan& plan, std::byte* block, ExactScratch& scratch) {
+  const ExactSolvePlan& exact = plan.exact;
+  for (std::size_t p = 0; p < exact.joint_count(); ++p) {
+    const ConstraintBlock c = JointAt(plan, block, p);
+    const ConstraintPlan& joint_plan = plan.constraints[exact.order[p]];
+    PointLanes& part = c.Main<PointConstraintLanes>().point;
+    ForEachChunk([&](std::size_t offset) {
       Sym33 k = ZeroSym33();
-      Mat33 a1 = ZeroMat33(), a2 = ZeroMat33();
-      if (bodies.motion1 == MotionType::kDynamic) {
-        a1 = point::InverseInertiaTimesCross(BodyInverseInertia(*bodies.body1, offset), r1);
-        point::AddBodyToInverseEffectiveMass(Load(bodies.body1->inv_mass, offset), a1, r1, k);
-      }
-      if (bodies.motion2 == MotionType::kDynamic) {
-        a2 = point::InverseInertiaTimesCross(BodyInverseInertia(*bodies.body2, offset), r2);
-        point::AddBodyToInverseEffectiveMass(Load(bodies.body2->inv_mass, offset), a2, r2, k);
-      }
-      StoreVec3(r1, joint.point.r1, offset);
-      StoreVec3(r2, joint.point.r2, offset);
-      StoreMat33(a1, joint.point.inv_i1_r1_cross, offset);
-      StoreMat33(a2, joint.point.inv_i2_r2_cross, offset);
+      const auto side = [&](std::size_t body, MotionType motion, const Vec3Lanes& lever,
+                            Mat33Lanes& cache) {
+        Mat33 a = ZeroMat33();
+        if (motion == MotionType::kDynamic) {
+          const Vec3 r = LoadVec3(lever, offset);
+          a = point::InverseInertiaTimesCross(LoadSym33(scratch.inverse_inertia[body], offset), r);
+          point::AddBodyToInverseEffectiveMass(Load(BodyAt(plan, block, body).inv_mass, offset),
+                                               a, r, k);
+        }
+        StoreMat33(a, cache, offset);
+      };
+      side(joint_plan.body1, c.bodies.motion1, part.r1, part.inv_i1_r1_cross);
+      side(joint_plan.body2, c.bodies.motion2, part.r2, part.inv_i2_r2_cross);
       StoreSym33(k, scratch.diagonal[p], offset);
     });
   }
@@ -250,33 +345,41 @@ HWY_INLINE Vec3 Separation(const ConstraintBlock& c, std::size_t offset) {
   return Sub(p2, p1);
 }
 
-// The angular step of the impulse lambda at lever arm r: I^-1 (r x lambda),
-// the torque first as the dense reference forms J^T lambda.
-HWY_INLINE Vec3 AngularStep(const BodyLanes& body, const Vec3& r, const Vec3& lambda,
-                            std::size_t offset) {
-  return Multiply(BodyInverseInertia(body, offset), Cross(r, lambda));
+// The angular step of the impulse lambda at lever arm r: I^-1 (r x lambda)
+// with the solve's inverse inertia, the torque first as the dense reference
+// forms J^T lambda.
+HWY_INLINE Vec3 AngularStep(const Sym33Lanes& inverse_inertia, const Vec3& r,
+                            const Vec3& lambda, std::size_t offset) {
+  return Multiply(LoadSym33(inverse_inertia, offset), Cross(r, lambda));
 }
 
 // Adds the position and rotation steps of lambda on one dynamic body (sign
 // -1 for a joint's body 1) to that body's sums for this Newton step.
-HWY_INLINE void AddBodyStep(const BodyLanes& body, LaneVec sign, const Vec3& r,
-                            const Vec3& lambda, Vec3Lanes& translation, Vec3Lanes& rotation,
-                            std::size_t offset) {
+HWY_INLINE void AddBodyStep(const BodyLanes& body, const Sym33Lanes& inverse_inertia,
+                            LaneVec sign, const Vec3& r, const Vec3& lambda,
+                            Vec3Lanes& translation, Vec3Lanes& rotation, std::size_t offset) {
   const Vec3 signed_lambda = Scale(lambda, sign);
   StoreVec3(MulAdd(signed_lambda, Load(body.inv_mass, offset), LoadVec3(translation, offset)),
             translation, offset);
-  StoreVec3(Add(LoadVec3(rotation, offset), AngularStep(body, r, signed_lambda, offset)),
+  StoreVec3(Add(LoadVec3(rotation, offset), AngularStep(inverse_inertia, r, signed_lambda, offset)),
             rotation, offset);
 }
 
 }  // namespace exact
 
-// Velocity phase: J v = 0 for every joint at once (see the header comment).
-// The impulses are kept as the point parts' total_lambda.
-inline void ExactSolveVelocity(const StepPlan& plan, std::byte* block, ExactScratch& scratch) {
+// Velocity phase: J v = 0 for every joint at once (see the header comment),
+// with the geometric stiffness `stiffness` * (pull) (LeverArmsAndInertia).
+// The impulses are kept as the point parts' total_lambda (the next
+// substep's pulls).
+// `visit()` is called once per joint (the step's prefetch of the next block).
+template <class Visit>
+void ExactSolveVelocity(const StepPlan& plan, std::byte* block, ExactScratch& scratch,
+                        float stiffness, Visit&& visit) {
   const ExactSolvePlan& exact = plan.exact;
+  exact::LeverArmsAndInertia(plan, block, scratch, stiffness);
   exact::AssembleK(plan, block, scratch);
   for (std::size_t p = 0; p < exact.joint_count(); ++p) {
+    visit();
     const ConstraintBlock c = exact::JointAt(plan, block, p);
     const PointLanes& part = c.Main<PointConstraintLanes>().point;
     ForEachChunk([&](std::size_t offset) {
@@ -298,6 +401,7 @@ inline void ExactSolveVelocity(const StepPlan& plan, std::byte* block, ExactScra
   exact::Solve(exact, scratch);
   for (std::size_t p = 0; p < exact.joint_count(); ++p) {
     const ConstraintBlock c = exact::JointAt(plan, block, p);
+    const ConstraintPlan& joint = plan.constraints[exact.order[p]];
     PointLanes& part = c.Main<PointConstraintLanes>().point;
     ForEachChunk([&](std::size_t offset) {
       const Vec3 lambda = LoadVec3(scratch.rhs[p], offset);
@@ -305,13 +409,15 @@ inline void ExactSolveVelocity(const StepPlan& plan, std::byte* block, ExactScra
       if (c.bodies.motion1 == MotionType::kDynamic) {
         BodyLanes& body = *c.bodies.body1;
         AddVelocityStep(body, Scale(lambda, hn::Neg(Load(body.inv_mass, offset))),
-                        Neg(exact::AngularStep(body, LoadVec3(part.r1, offset), lambda, offset)),
+                        Neg(exact::AngularStep(scratch.inverse_inertia[joint.body1],
+                                               LoadVec3(part.r1, offset), lambda, offset)),
                         offset);
       }
       if (c.bodies.motion2 == MotionType::kDynamic) {
         BodyLanes& body = *c.bodies.body2;
         AddVelocityStep(body, Scale(lambda, Load(body.inv_mass, offset)),
-                        exact::AngularStep(body, LoadVec3(part.r2, offset), lambda, offset),
+                        exact::AngularStep(scratch.inverse_inertia[joint.body2],
+                                           LoadVec3(part.r2, offset), lambda, offset),
                         offset);
       }
     });
@@ -321,15 +427,18 @@ inline void ExactSolveVelocity(const StepPlan& plan, std::byte* block, ExactScra
 // Position phase: Newton steps until each world's joints are within
 // `tolerance`, at most `passes`. Returns the number of steps taken (by the
 // slowest world of the block).
-inline int ExactSolvePosition(const StepPlan& plan, std::byte* block, ExactScratch& scratch,
-                              int passes, float tolerance) {
+template <class Visit>
+int ExactSolvePosition(const StepPlan& plan, std::byte* block, ExactScratch& scratch, int passes,
+                       float tolerance, Visit&& visit) {
   const ExactSolvePlan& exact = plan.exact;
   const LaneVec tolerance_squared = Splat(tolerance * tolerance);
   int pass = 0;
   for (; pass < passes; ++pass) {
-    exact::AssembleK(plan, block, scratch);
+    // The mass metric (no stiffness); K only once some world has to move.
+    exact::LeverArmsAndInertia(plan, block, scratch, 0.0f);
     ForEachChunk([&](std::size_t offset) { Store(Zero(), scratch.moving, offset); });
     for (std::size_t p = 0; p < exact.joint_count(); ++p) {
+      visit();
       const ConstraintBlock c = exact::JointAt(plan, block, p);
       ForEachChunk([&](std::size_t offset) {
         const Vec3 separation = exact::Separation(c, offset);
@@ -345,6 +454,7 @@ inline int ExactSolvePosition(const StepPlan& plan, std::byte* block, ExactScrat
       any_moving |= AnyLane(hn::Ne(Load(scratch.moving, offset), Zero()));
     });
     if (!any_moving) break;
+    exact::AssembleK(plan, block, scratch);
     exact::Factor(exact, scratch);
     exact::Solve(exact, scratch);
     // One Newton step moves each body once, by the sum of its joints'
@@ -363,12 +473,14 @@ inline int ExactSolvePosition(const StepPlan& plan, std::byte* block, ExactScrat
       ForEachChunk([&](std::size_t offset) {
         const Vec3 lambda = LoadVec3(scratch.rhs[p], offset);
         if (c.bodies.motion1 == MotionType::kDynamic) {
-          exact::AddBodyStep(*c.bodies.body1, Splat(-1.0f), LoadVec3(part.r1, offset), lambda,
+          exact::AddBodyStep(*c.bodies.body1, scratch.inverse_inertia[joint.body1], Splat(-1.0f),
+                             LoadVec3(part.r1, offset), lambda,
                              scratch.translation[joint.body1], scratch.rotation[joint.body1],
                              offset);
         }
         if (c.bodies.motion2 == MotionType::kDynamic) {
-          exact::AddBodyStep(*c.bodies.body2, Splat(1.0f), LoadVec3(part.r2, offset), lambda,
+          exact::AddBodyStep(*c.bodies.body2, scratch.inverse_inertia[joint.body2], Splat(1.0f),
+                             LoadVec3(part.r2, offset), lambda,
                              scratch.translation[joint.body2], scratch.rotation[joint.body2],
                              offset);
         }

@@ -396,6 +396,10 @@ void CheckStepSettings(const StepSettings& s, const StepPlan& plan) {
   if (!(s.exact_tolerance > 0.0f && std::isfinite(s.exact_tolerance))) {
     Refuse(what, "exact_tolerance", "must be finite and > 0 (got " + ValueText(s.exact_tolerance) + ")");
   }
+  if (!(s.exact_geometric_stiffness >= 0.0f && std::isfinite(s.exact_geometric_stiffness))) {
+    Refuse(what, "exact_geometric_stiffness",
+           "must be finite and >= 0 (got " + ValueText(s.exact_geometric_stiffness) + ")");
+  }
   if (s.solver == JointSolver::kExact && !plan.exact.available()) {
     Refuse(what, "solver", std::string("is exact, but ") + plan.exact.unavailable);
   }

@@ -174,10 +174,15 @@ bool StepBlockWith(const StepPlan& plan, std::byte* block, const std::byte* next
                    const StepParams& params, Clock& clock) {
   clock.Start();
   const std::size_t constraint_count = plan.constraints.size();
+  // The exact solve visits each joint once in its velocity solve and once
+  // per Newton step, a number known only as it converges: its prefetch is
+  // spread over the velocity solve and the first step.
+  const bool exact = params.solver == JointSolver::kExact && constraint_count != 0;
+  const int visits_per_constraint =
+      exact ? 2 : 2 + params.velocity_iterations + params.position_iterations;
   NextBlockPrefetch prefetch(
       next_block, plan.block_bytes,
-      std::max<std::size_t>(1, constraint_count) *
-          static_cast<std::size_t>(2 + params.velocity_iterations + params.position_iterations));
+      std::max<std::size_t>(1, constraint_count) * static_cast<std::size_t>(visits_per_constraint));
   // Views of the plan's constraints in this block, in solve order: a few
   // offsets each, so built per pass rather than allocated per block.
   const auto for_each_constraint = [&](auto&& verb) {
@@ -193,7 +198,6 @@ bool StepBlockWith(const StepPlan& plan, std::byte* block, const std::byte* next
   health = WorldHealthLanes{};
   // The exact solve's working storage, per thread (Step refused kExact where
   // the plan cannot take it).
-  const bool exact = params.solver == JointSolver::kExact && constraint_count != 0;
   thread_local ExactScratch scratch;
   if (exact) scratch.Fit(plan);
 
@@ -213,7 +217,8 @@ bool StepBlockWith(const StepPlan& plan, std::byte* block, const std::byte* next
     clock.Lap(StepPhase::kForces);
 
     if (exact) {
-      ExactSolveVelocity(plan, block, scratch);
+      ExactSolveVelocity(plan, block, scratch, params.exact_stiffness,
+                         [&] { prefetch.Visit(); });
       clock.Lap(StepPhase::kVelocity);
     } else if (constraint_count != 0) {
       for_each_constraint([&](const ConstraintBlock& c) { SetupConstraint(c, step); });
@@ -242,7 +247,7 @@ bool StepBlockWith(const StepPlan& plan, std::byte* block, const std::byte* next
 
     if (exact) {
       ExactSolvePosition(plan, block, scratch, params.position_iterations,
-                         params.exact_tolerance);
+                         params.exact_tolerance, [&] { prefetch.Visit(); });
       clock.Lap(StepPhase::kPosition);
     } else if (constraint_count != 0) {
       for (int iteration = 0; iteration < params.position_iterations; ++iteration) {

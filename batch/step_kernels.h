@@ -24,6 +24,7 @@ struct StepParams {
   bool gyroscopic;  // StepSettings::gyroscopic
   JointSolver solver;     // kExact: batch/exact_solve-inl.h (the plan allows it)
   float exact_tolerance;  // m
+  float exact_stiffness;  // StepSettings::exact_geometric_stiffness x substep dt
 };
 
 struct StepKernels {

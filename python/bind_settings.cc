@@ -199,7 +199,9 @@ void BindStepAndBatchOptions(py::module_& m) {
       .def_readwrite("solver", &StepSettings::solver,
                      "GAUSS_SEIDEL (Jolt's) or EXACT (position_iterations: most Newton steps)")
       .def_readwrite("exact_tolerance", &StepSettings::exact_tolerance,
-                     "m: EXACT's Newton steps stop at this joint gap");
+                     "m: EXACT's Newton steps stop at this joint gap")
+      .def_readwrite("exact_geometric_stiffness", &StepSettings::exact_geometric_stiffness,
+                     "EXACT: implicit geometric stiffness, x the backward-Euler amount (0: off)");
 
   py::class_<BatchOptions> options(m, "BatchOptions", "How a Batch runs its worlds.");
   DefKeywordConstructors(options);

@@ -9,7 +9,12 @@
 // bodies are not unknowns (infinite mass); a kinematic body's velocity still
 // enters J v. K = J M^-1 J^T, dense, factored by Eigen's LDL^T.
 //
-//   velocity:  lambda = K^-1 (-J v), v += M^-1 J^T lambda   (then J v = 0)
+//   velocity:  lambda = K^-1 (-J v), v += M^-1 J^T lambda   (then J v = 0),
+//              with each dynamic body's I replaced by I + G, G summing over
+//              its joints  stiffness * max(0, s lambda_prev . r) (E - r^ r^T)
+//              (s = -1 on body 1, lambda_prev the joint's impulse of the last
+//              velocity solve, kept in `impulses`): the implicit geometric
+//              stiffness of batch/exact_solve-inl.h
 //   position:  up to `passes` times, while some |C_k| > tolerance:
 //              lambda = K^-1 (-C) at the current poses,
 //              x += m^-1 (J^T lambda)_linear,
@@ -18,6 +23,7 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <cstddef>
 #include <vector>
 
@@ -33,15 +39,20 @@ class ExactJointSolve {
   using Matrix = Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic>;
   using Vector = Eigen::Matrix<T, Eigen::Dynamic, 1>;
 
-  ExactJointSolve(std::vector<Body<T>>& bodies, std::vector<const PointConstraint<T>*> joints)
-      : bodies_(bodies), joints_(std::move(joints)), column_(bodies.size(), kNotUnknown) {
+  // `impulses`: one per joint, the last velocity solve's, updated by
+  // SolveVelocity (zero at first).
+  ExactJointSolve(std::vector<Body<T>>& bodies, std::vector<const PointConstraint<T>*> joints,
+                  std::vector<Vec3<T>>& impulses, T stiffness)
+      : bodies_(bodies), joints_(std::move(joints)), impulses_(impulses), stiffness_(stiffness),
+        column_(bodies.size(), kNotUnknown) {
+    impulses_.resize(joints_.size(), Vec3<T>::Zero());
     for (std::size_t b = 0; b < bodies_.size(); ++b) {
       if (bodies_[b].IsDynamic()) column_[b] = 6 * dynamic_++;
     }
   }
 
   void SolveVelocity() {
-    const Geometry g = Assemble();
+    const Geometry g = Assemble(stiffness_);
     Vector b(3 * joints_.size());
     for (std::size_t k = 0; k < joints_.size(); ++k) {
       const PointConstraint<T>& joint = *joints_[k];
@@ -52,12 +63,13 @@ class ExactJointSolve {
       b.template segment<3>(3 * k) = v1 - v2;  // -J v
     }
     const Vector lambda = g.k.ldlt().solve(b);
+    for (std::size_t k = 0; k < joints_.size(); ++k) impulses_[k] = lambda.template segment<3>(3 * k);
     const Vector impulse = g.j.transpose() * lambda;
     for (std::size_t body = 0; body < bodies_.size(); ++body) {
       if (column_[body] == kNotUnknown) continue;
       Body<T>& bd = bodies_[body];
       bd.AddLinearVelocityStep(bd.inv_mass * impulse.template segment<3>(column_[body]));
-      bd.angular_velocity += bd.InverseInertia() * impulse.template segment<3>(column_[body] + 3);
+      bd.angular_velocity += g.inverse_inertia[body] * impulse.template segment<3>(column_[body] + 3);
     }
   }
 
@@ -65,7 +77,7 @@ class ExactJointSolve {
   int SolvePosition(int passes, T tolerance) {
     int pass = 0;
     for (; pass < passes; ++pass) {
-      const Geometry g = Assemble();
+      const Geometry g = Assemble(T(0));
       Vector c(3 * joints_.size());
       bool converged = true;
       for (std::size_t k = 0; k < joints_.size(); ++k) {
@@ -80,7 +92,8 @@ class ExactJointSolve {
       for (std::size_t body = 0; body < bodies_.size(); ++body) {
         if (column_[body] == kNotUnknown) continue;
         Body<T>& bd = bodies_[body];
-        const Vec3<T> rotation = bd.InverseInertia() * impulse.template segment<3>(column_[body] + 3);
+        const Vec3<T> rotation =
+            g.inverse_inertia[body] * impulse.template segment<3>(column_[body] + 3);
         bd.AddPositionStep(bd.inv_mass * impulse.template segment<3>(column_[body]));
         bd.AddRotationStep(rotation);
       }
@@ -93,11 +106,34 @@ class ExactJointSolve {
 
   struct Geometry {
     std::vector<Vec3<T>> r1, r2;
+    std::vector<Mat33<T>> inverse_inertia;  // per body (dynamic ones), with G
     Matrix j, k;
   };
 
-  Geometry Assemble() const {
+  Geometry Assemble(T stiffness) const {
     Geometry g;
+    for (std::size_t k = 0; k < joints_.size(); ++k) {
+      g.r1.push_back(bodies_[joints_[k]->body1()].rotation * joints_[k]->local_point1());
+      g.r2.push_back(bodies_[joints_[k]->body2()].rotation * joints_[k]->local_point2());
+    }
+    g.inverse_inertia.resize(bodies_.size(), Mat33<T>::Zero());
+    std::vector<Mat33<T>> stiffness_of(bodies_.size(), Mat33<T>::Zero());
+    const auto pull = [&](std::size_t body, const Vec3<T>& r, T sign, const Vec3<T>& lambda) {
+      const T w = stiffness * std::max(T(0), sign * lambda.dot(r));
+      if (w > T(0)) stiffness_of[body] += w * (Mat33<T>::Identity() - r * r.transpose() / r.squaredNorm());
+    };
+    if (stiffness > T(0)) {
+      for (std::size_t k = 0; k < joints_.size(); ++k) {
+        if (column_[joints_[k]->body1()] != kNotUnknown) pull(joints_[k]->body1(), g.r1[k], T(-1), impulses_[k]);
+        if (column_[joints_[k]->body2()] != kNotUnknown) pull(joints_[k]->body2(), g.r2[k], T(1), impulses_[k]);
+      }
+    }
+    for (std::size_t body = 0; body < bodies_.size(); ++body) {
+      if (column_[body] == kNotUnknown) continue;
+      const Mat33<T> inverse = bodies_[body].InverseInertia();
+      // (I + G)^-1 = I^-1 (E + G I^-1)^-1: no inverse of I needed.
+      g.inverse_inertia[body] = inverse * (Mat33<T>::Identity() + stiffness_of[body] * inverse).inverse();
+    }
     const std::size_t rows = 3 * joints_.size();
     g.j = Matrix::Zero(rows, 6 * dynamic_);
     Matrix inverse_mass = Matrix::Zero(6 * dynamic_, 6 * dynamic_);
@@ -105,12 +141,10 @@ class ExactJointSolve {
       if (column_[body] == kNotUnknown) continue;
       const std::size_t c = column_[body];
       inverse_mass.template block<3, 3>(c, c) = bodies_[body].inv_mass * Mat33<T>::Identity();
-      inverse_mass.template block<3, 3>(c + 3, c + 3) = bodies_[body].InverseInertia();
+      inverse_mass.template block<3, 3>(c + 3, c + 3) = g.inverse_inertia[body];
     }
     for (std::size_t k = 0; k < joints_.size(); ++k) {
       const PointConstraint<T>& joint = *joints_[k];
-      g.r1.push_back(bodies_[joint.body1()].rotation * joint.local_point1());
-      g.r2.push_back(bodies_[joint.body2()].rotation * joint.local_point2());
       if (column_[joint.body1()] != kNotUnknown) {
         g.j.template block<3, 3>(3 * k, column_[joint.body1()]) = -Mat33<T>::Identity();
         g.j.template block<3, 3>(3 * k, column_[joint.body1()] + 3) = Cross(g.r1[k]);
@@ -132,6 +166,8 @@ class ExactJointSolve {
 
   std::vector<Body<T>>& bodies_;
   std::vector<const PointConstraint<T>*> joints_;
+  std::vector<Vec3<T>>& impulses_;
+  T stiffness_;  // geometric stiffness factor x dt
   std::vector<std::size_t> column_;  // first column of each dynamic body in J
   std::size_t dynamic_ = 0;
 };

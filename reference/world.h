@@ -361,7 +361,7 @@ class World {
 
   // JointSolver::kExact (reference/exact_solve.h): ball joints only, on
   // bodies without restricted degrees of freedom (what the batch's plan takes).
-  ExactJointSolve<T> ExactSolve() {
+  ExactJointSolve<T> ExactSolve(T stiffness) {
     std::vector<const PointConstraint<T>*> joints;
     for (std::size_t index = 0; index < constraints_.size(); ++index) {
       const auto* joint = std::get_if<PointConstraint<T>>(&constraints_[index]);
@@ -376,14 +376,14 @@ class World {
                                     " restricts its DOFs (exact solve)");
       }
     }
-    return ExactJointSolve<T>(bodies_, std::move(joints));
+    return ExactJointSolve<T>(bodies_, std::move(joints), exact_impulses_, stiffness);
   }
 
   void StepOnce(const StepSettings& settings, T dt, T warm_start_ratio) {
     ApplyForcesAndDamping(dt, ToVec3<T>(settings.gravity), settings.gyroscopic);
 
     if (settings.solver == JointSolver::kExact && !constraints_.empty()) {
-      ExactJointSolve<T> exact = ExactSolve();
+      ExactJointSolve<T> exact = ExactSolve(T(settings.exact_geometric_stiffness) * dt);
       exact.SolveVelocity();
       Integrate(dt);
       exact.SolvePosition(settings.position_iterations, T(settings.exact_tolerance));
@@ -429,6 +429,8 @@ class World {
   std::vector<BodyMotionSettings<T>> motion_;
   std::vector<Constraint> constraints_;
   T previous_step_dt_ = T(0);  // Jolt's mPreviousStepDeltaTime (warm-start ratio)
+  // JointSolver::kExact: each joint's impulse of the last velocity solve.
+  std::vector<Vec3<T>> exact_impulses_;
 };
 
 }  // namespace manyworlds::reference

@@ -44,7 +44,8 @@ Options RunOptions(int argc, char** argv) {
   return Options(argc, argv,
                  {"--scene", "--worlds", "--steps", "--threads", "--substeps",
                   "--velocity-iterations", "--position-iterations", "--warmup", "--seed",
-                  "--mass-range-limit", "--solver", "--exact-tolerance", kRecordOption,
+                  "--mass-range-limit", "--solver", "--exact-tolerance",
+                  "--geometric-stiffness", kRecordOption,
                   kRecordWorldsOption},
                  {"--profile"});
 }
@@ -86,14 +87,22 @@ RunSetup ParseRunSetup(const Options& options) {
     throw UsageError("--solver = '" + solver + "': accepted gauss-seidel (Jolt's, the default) "
                      "and exact");
   }
-  if (options.Has("--exact-tolerance")) {
-    const std::string text = options.Text("--exact-tolerance");
+  // A decimal number in (0, max] (tolerance) or [0, max] (stiffness).
+  const auto real = [&](const char* flag, double max, bool zero_allowed, const char* what) {
+    const std::string text = options.Text(flag);
     char* end = nullptr;
-    const double tolerance = std::strtod(text.c_str(), &end);
-    if (text.empty() || *end != '\0' || !(tolerance > 0.0 && tolerance <= 1.0)) {
-      throw UsageError("--exact-tolerance = '" + text + "': a length in m in (0, 1]");
+    const double value = std::strtod(text.c_str(), &end);
+    if (text.empty() || *end != '\0' || !(value <= max) || !(zero_allowed ? value >= 0.0 : value > 0.0)) {
+      throw UsageError(std::string(flag) + " = '" + text + "': " + what);
     }
-    setup.settings.exact_tolerance = float(tolerance);
+    return float(value);
+  };
+  if (options.Has("--exact-tolerance")) {
+    setup.settings.exact_tolerance = real("--exact-tolerance", 1.0, false, "a length in m in (0, 1]");
+  }
+  if (options.Has("--geometric-stiffness")) {
+    setup.settings.exact_geometric_stiffness =
+        real("--geometric-stiffness", 1e6, true, "a factor in [0, 1e6]");
   }
   return setup;
 }

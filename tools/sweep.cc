@@ -23,6 +23,7 @@
 #include <system_error>
 #include <vector>
 
+#include "batch/plan.h"
 #include "manyworlds/batch.h"
 #include "manyworlds/mass_range.h"
 #include "manyworlds/scene.h"
@@ -123,7 +124,7 @@ SweepConfig ConfigOf(int argc, char** argv) {
   const Options options(argc, argv,
                         {"--scenes", "--worlds", "--sample-worlds", "--seconds", "--passes",
                          "--min-time", "--threads", "--grid", "--out", "--seed",
-                         "--mass-range-limit"},
+                         "--mass-range-limit", "--solver"},
                         {"--small", "--overwrite"});
   SweepConfig config;
   config.small = options.Has("--small");
@@ -157,6 +158,19 @@ SweepConfig ConfigOf(int argc, char** argv) {
   config.full_grid = grid == "full";
   config.seed = options.Number("--seed", 1, 0, UINT64_MAX);
   config.mass_range_limit = tools::MassRangeLimitOption(options);
+  const std::string solver = options.Text("--solver", "gauss-seidel");
+  if (solver == "exact") {
+    config.solver = JointSolver::kExact;
+    for (const std::string& id : config.scenes) {
+      const StepPlan plan = CompilePlan(MakeScene(id));
+      if (!plan.exact.available()) {
+        throw UsageError("--solver exact: scene '" + id + "' cannot be solved exactly (" +
+                         plan.exact.unavailable + "); pass --scenes with the chains");
+      }
+    }
+  } else if (solver != "gauss-seidel") {
+    throw UsageError("--solver = '" + solver + "': expected 'gauss-seidel' or 'exact'");
+  }
   config.out = options.Text("--out", "sweep");
   for (int i = 0; i < argc; ++i) config.command_line += (i ? " " : "") + std::string(argv[i]);
   return config;
@@ -386,6 +400,7 @@ int Sweep(int argc, char** argv) {
       row.scene = id;
       row.knobs = knobs;
       row.settings = StepSettingsOf(id, knobs);
+      row.settings.solver = config.solver;
       MeasureAccuracy(scene, actions, config, steps, row.settings, reference, row);
       std::printf("%-14s %-12s position error RMS %-9s velocity RMS %-9s trajectory RMS %-9s m\n",
                   id.c_str(), SettingText(knobs).c_str(), Number(row.position.Rms()).c_str(),

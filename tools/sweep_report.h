@@ -57,6 +57,9 @@ struct SweepConfig {
   bool overwrite = false;  // replace an earlier report in `out`
   std::uint64_t seed = 0;
   double mass_range_limit = 0.0;  // LimitMassRange on every scene first; 0: off
+  // --solver exact: every setting with JointSolver::kExact (position
+  // iterations are then its Newton steps; velocity iterations do nothing).
+  JointSolver solver = JointSolver::kGaussSeidel;
   std::filesystem::path out;
   std::string command_line;
 };
