@@ -281,9 +281,11 @@ inline void AssembleK(const StepPlan& plan, std::byte* block, ExactScratch& scra
   }
 }
 
-// LDL^T in place: diagonal -> D^-1, blocks -> W.
-inline void Factor(const ExactSolvePlan& exact, ExactScratch& scratch) {
+// LDL^T in place: diagonal -> D^-1, blocks -> W. visit() once per joint.
+template <class Visit>
+void Factor(const ExactSolvePlan& exact, ExactScratch& scratch, Visit&& visit) {
   for (std::size_t p = 0; p < exact.joint_count(); ++p) {
+    visit();
     const auto& later = exact.later[p];
     ForEachChunk([&](std::size_t offset) {
       LaneMask invertible;
@@ -371,7 +373,8 @@ HWY_INLINE void AddBodyStep(const BodyLanes& body, const Sym33Lanes& inverse_ine
 // with the geometric stiffness `stiffness` * (pull) (LeverArmsAndInertia).
 // The impulses are kept as the point parts' total_lambda (the next
 // substep's pulls).
-// `visit()` is called once per joint (the step's prefetch of the next block).
+// `visit()` is called three times per joint (the step's prefetch of the next
+// block, spread thin so that its requests never queue up).
 template <class Visit>
 void ExactSolveVelocity(const StepPlan& plan, std::byte* block, ExactScratch& scratch,
                         float stiffness, Visit&& visit) {
@@ -397,9 +400,10 @@ void ExactSolveVelocity(const StepPlan& plan, std::byte* block, ExactScratch& sc
       StoreVec3(s, scratch.rhs[p], offset);
     });
   }
-  exact::Factor(exact, scratch);
+  exact::Factor(exact, scratch, visit);
   exact::Solve(exact, scratch);
   for (std::size_t p = 0; p < exact.joint_count(); ++p) {
+    visit();
     const ConstraintBlock c = exact::JointAt(plan, block, p);
     const ConstraintPlan& joint = plan.constraints[exact.order[p]];
     PointLanes& part = c.Main<PointConstraintLanes>().point;
@@ -455,7 +459,7 @@ int ExactSolvePosition(const StepPlan& plan, std::byte* block, ExactScratch& scr
     });
     if (!any_moving) break;
     exact::AssembleK(plan, block, scratch);
-    exact::Factor(exact, scratch);
+    exact::Factor(exact, scratch, visit);
     exact::Solve(exact, scratch);
     // One Newton step moves each body once, by the sum of its joints'
     // steps (as J^T lambda): rotation steps applied joint after joint would
@@ -467,6 +471,7 @@ int ExactSolvePosition(const StepPlan& plan, std::byte* block, ExactScratch& scr
       ForEachChunk([&](std::size_t offset) { StoreVec3(ZeroVec3(), sum, offset); });
     }
     for (std::size_t p = 0; p < exact.joint_count(); ++p) {
+      visit();
       const ConstraintBlock c = exact::JointAt(plan, block, p);
       const ConstraintPlan& joint = plan.constraints[exact.order[p]];
       const PointLanes& part = c.Main<PointConstraintLanes>().point;

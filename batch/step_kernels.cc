@@ -174,12 +174,13 @@ bool StepBlockWith(const StepPlan& plan, std::byte* block, const std::byte* next
                    const StepParams& params, Clock& clock) {
   clock.Start();
   const std::size_t constraint_count = plan.constraints.size();
-  // The exact solve visits each joint once in its velocity solve and once
-  // per Newton step, a number known only as it converges: its prefetch is
-  // spread over the velocity solve and the first step.
+  // The exact solve visits each joint three times in its velocity solve
+  // and three times per Newton step, whose number is known only as they
+  // converge: its prefetch is spread over the velocity solve and the first
+  // Newton step.
   const bool exact = params.solver == JointSolver::kExact && constraint_count != 0;
   const int visits_per_constraint =
-      exact ? 2 : 2 + params.velocity_iterations + params.position_iterations;
+      exact ? 6 : 2 + params.velocity_iterations + params.position_iterations;
   NextBlockPrefetch prefetch(
       next_block, plan.block_bytes,
       std::max<std::size_t>(1, constraint_count) * static_cast<std::size_t>(visits_per_constraint));
