@@ -3,7 +3,9 @@
 #include "batch/exact_plan.h"
 
 #include <algorithm>
+#include <map>
 #include <set>
+#include <utility>
 
 #include "batch/plan.h"
 #include "manyworlds/scene.h"
@@ -34,6 +36,26 @@ std::string Unavailable(const Scene& scene, const StepPlan& plan) {
         scene.bodies()[b].allowed_dofs != AllowedDofs::kAll) {
       return plan.bodies[b].label +
              " restricts its allowed_dofs; the exact solve takes unrestricted bodies only";
+    }
+  }
+  // Two ball joints between the same two bodies (static and kinematic
+  // bodies count as one fixed frame: neither moves in the solve) leave the
+  // turn about the line through their anchors free and make their rows
+  // dependent: equal and opposite impulses along that line move nothing, so
+  // K is singular and float would factor it into arbitrary impulses.
+  std::map<std::pair<std::size_t, std::size_t>, std::size_t> joined;
+  const std::size_t kFixedFrame = plan.bodies.size();
+  for (std::size_t i = 0; i < plan.constraints.size(); ++i) {
+    const ConstraintPlan& c = plan.constraints[i];
+    const std::size_t a = c.motion1 == MotionType::kDynamic ? c.body1 : kFixedFrame;
+    const std::size_t b = c.motion2 == MotionType::kDynamic ? c.body2 : kFixedFrame;
+    const auto [it, first] = joined.emplace(std::minmax(a, b), i);
+    if (!first) {
+      const ConstraintPlan& other = plan.constraints[it->second];
+      return other.label + " and " + c.label +
+             " join the same two bodies (static and kinematic bodies count as one fixed "
+             "frame): their rows are dependent, which the exact solve cannot factor; a "
+             "hinge or fixed constraint (Gauss-Seidel) holds such a pair";
     }
   }
   return {};
@@ -87,16 +109,13 @@ ExactSolvePlan PlanExactSolve(const Scene& scene, const StepPlan& plan) {
     }
   }
 
-  // Blocks in positions: every (p, later neighbour) pair, numbered once.
-  std::vector<std::vector<std::size_t>> block_of(joints,
-                                                 std::vector<std::size_t>(joints, joints * joints));
+  // Blocks in positions: every (p, later neighbour) pair, numbered once (a
+  // map: as many entries as blocks, not joints squared).
+  std::map<std::pair<std::size_t, std::size_t>, std::size_t> block_of;
   const auto block = [&](std::size_t first, std::size_t second) {
-    std::size_t& index = block_of[first][second];
-    if (index == joints * joints) {
-      index = exact.blocks.size();
-      exact.blocks.push_back({first, second});
-    }
-    return index;
+    const auto [it, added] = block_of.emplace(std::pair(first, second), exact.blocks.size());
+    if (added) exact.blocks.push_back({first, second});
+    return it->second;
   };
   exact.later.resize(joints);
   exact.updates.resize(joints);

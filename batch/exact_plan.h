@@ -67,8 +67,10 @@ struct ExactSolvePlan {
   std::size_t fill_blocks() const;  // blocks that are fill, not couplings
 };
 
-// Plans the exact solve of a scene CompilePlan has laid out as `plan` (never
-// throws: a scene it cannot solve gets `unavailable`).
+// Plans the exact solve of a scene CompilePlan has laid out as `plan`; a
+// scene it cannot solve gets `unavailable` (not an exception). Storage grows
+// with the blocks (couplings and fill), time with joints squared (the
+// minimum-degree search).
 ExactSolvePlan PlanExactSolve(const Scene& scene, const StepPlan& plan);
 
 }  // namespace manyworlds

@@ -218,7 +218,8 @@ bool StepBlockWith(const StepPlan& plan, std::byte* block, const std::byte* next
     clock.Lap(StepPhase::kForces);
 
     if (exact) {
-      ExactSolveVelocity(plan, block, scratch, params.exact_stiffness,
+      ExactSolveVelocity(plan, block, scratch,
+                         substep == 0 ? params.exact_first_stiffness : params.exact_stiffness,
                          [&] { prefetch.Visit(); });
       clock.Lap(StepPhase::kVelocity);
     } else if (constraint_count != 0) {

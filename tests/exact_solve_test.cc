@@ -1,7 +1,9 @@
 // JointSolver::kExact: the plan's elimination order and fill, every lane
 // against the dense double solve of reference/exact_solve.h step by step on
-// every target, the tolerance the Newton steps promise, refusals, and the
-// independence of worlds (a NaN world, threads).
+// every target (chains, a floating star, a closed ring, links carried by a
+// kinematic body), the tolerance the Newton steps promise, what the
+// geometric stiffness holds, refusals, and the independence of worlds (a
+// NaN world, threads).
 
 #include <gtest/gtest.h>
 
@@ -81,9 +83,29 @@ Scene Ring() {
   return scene;
 }
 
+// Three links hung from a kinematic body that moves and turns: its velocity
+// enters the right-hand side, it is no unknown, and the solve never moves it.
+Scene Carried() {
+  Scene scene;
+  BodySettings carrier;
+  carrier.name = "carrier";
+  carrier.motion_type = MotionType::kKinematic;
+  carrier.linear_velocity = {0.5f, 0.0f, 0.2f};
+  carrier.angular_velocity = {0.0f, 1.0f, 0.0f};
+  scene.AddBody(carrier);
+  for (std::size_t i = 0; i < 3; ++i) {
+    scene.AddBody(Dynamic("link" + std::to_string(i), 0.8f, {0.02f, 0.003f, 0.02f},
+                          {0.1f * float(i), -0.25f - 0.5f * float(i), 0.0f}));
+    scene.AddConstraint(Ball("joint" + std::to_string(i), i, i + 1,
+                             {0.1f * float(i) - 0.05f, -0.5f * float(i), 0.0f}));
+  }
+  return scene;
+}
+
 Scene ExactScene(const std::string& id) {
   if (id == "star") return Star();
   if (id == "ring") return Ring();
+  if (id == "carried") return Carried();
   return MakeReferenceScene(id);
 }
 
@@ -140,7 +162,8 @@ class ExactSolveTest : public ::testing::TestWithParam<std::tuple<std::string, s
 // condition number, which the float reference measures. Measured worst
 // (position, rotation, velocity) over the targets: chain16 37 177 68 (float
 // reference 38 177 94), chain16-r100 579 2544 762 (float reference 363 2425
-// 894), star 1 4 2, ring 155 292 1059 (float reference 149 281 758).
+// 894), star 1 4 2, ring 155 292 1059 (float reference 149 281 758),
+// carried 1 2 5.
 constexpr double kStepTolerance = 1024.0;
 
 TEST_P(ExactSolveTest, EveryLaneMatchesTheDenseDoubleSolveStepByStep) {
@@ -206,7 +229,7 @@ TEST_P(ExactSolveTest, EveryJointEndsEveryStepWithinTheTolerance) {
 
 std::vector<std::tuple<std::string, std::int64_t>> Cases() {
   std::vector<std::tuple<std::string, std::int64_t>> cases;
-  for (const char* id : {"chain16", "chain16-r100", "star", "ring"}) {
+  for (const char* id : {"chain16", "chain16-r100", "star", "ring", "carried"}) {
     for (std::int64_t target : SupportedStepTargets()) cases.emplace_back(id, target);
   }
   return cases;
@@ -284,6 +307,29 @@ TEST(ExactSolveRefusalTest, NamesTheConstraintOrBodyAndMovesNothing) {
     FAIL() << "the exact solve took a body with restricted DOFs";
   } catch (const SceneError& e) {
     EXPECT_NE(std::string(e.what()).find(link.name), std::string::npos) << e.what();
+  }
+
+  // Two ball joints between the same bodies: dependent rows. The static
+  // world and a kinematic body count as one fixed frame.
+  for (const bool second_to_other_fixed_body : {false, true}) {
+    Scene doubled = MakeReferenceScene("chain16");
+    std::size_t fixed = 0;
+    if (second_to_other_fixed_body) {
+      BodySettings post;
+      post.name = "post";
+      post.motion_type = MotionType::kKinematic;
+      fixed = doubled.AddBody(post);
+    }
+    doubled.AddConstraint(Ball("second pivot", fixed, 1, {0.3f, 0.0f, 0.0f}));
+    Batch batch(doubled, 1);
+    try {
+      batch.Step(ExactSettings());
+      FAIL() << "the exact solve took two ball joints between the same bodies";
+    } catch (const SceneError& e) {
+      const std::string message = e.what();
+      EXPECT_NE(message.find("world-link0"), std::string::npos) << message;
+      EXPECT_NE(message.find("second pivot"), std::string::npos) << message;
+    }
   }
 
   Batch chain(MakeReferenceScene("chain16"), 1);
