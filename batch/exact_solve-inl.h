@@ -24,7 +24,7 @@
 // Velocity phase (replaces setup, warm start and the velocity iterations):
 //   b = -J v, lambda = K^-1 b, applied to both bodies: J v = 0 afterwards.
 //   M's rotational blocks carry the joints' geometric stiffness from the last
-//   substep's impulses (LeverArmsAndInertia), taken implicitly.
+//   substep's impulses (Inertia), taken implicitly.
 // Position phase (replaces the Baumgarte iterations): Newton steps on C = 0,
 //   C_k = x2 + r2 - x1 - r1 at the current poses (K re-assembled there),
 //   lambda = K^-1 (-C), applied as position and rotation steps, in each world
@@ -154,21 +154,9 @@ HWY_INLINE void AddTransverseStiffness(LaneVec w, const Vec3& r, Sym33& g) {
   g.yz = hn::NegMulAdd(hn::Mul(r.y, r.z), scale, g.yz);
 }
 
-// The lever arms r1, r2 of every joint at the current rotations, and each
-// dynamic body's inverse inertia for this solve: I^-1 at its current
-// rotation, or with `stiffness` > 0 (velocity phase) (I + G)^-1, where G
-// sums over the body's joints  stiffness * max(0, s lambda . r) (E - r^ r^T)
-// with lambda the joint's impulse of the last velocity solve and s = -1 on
-// body 1: the geometric stiffness of the joints' pulls (Tournier et al.,
-// "Stable Constrained Dynamics", 2015), taken implicitly. A slender link
-// pulled hard along its length by a heavy body swings transversally faster
-// than one step can follow explicitly (chain16-r100 comes apart without it
-// at 1 substep); stiffness = dt is the backward-Euler amount of it; only
-// pulls count, pushes would make I + G indefinite. Computed as
-// I^-1 (E + G I^-1)^-1, which needs no inverse of I (a zero inverse inertia
-// stays zero).
-inline void LeverArmsAndInertia(const StepPlan& plan, std::byte* block, ExactScratch& scratch,
-                                float stiffness) {
+// The lever arms r1, r2 of every joint at the current rotations, cached in
+// its point part.
+inline void LeverArms(const StepPlan& plan, std::byte* block) {
   const ExactSolvePlan& exact = plan.exact;
   for (std::size_t p = 0; p < exact.joint_count(); ++p) {
     const ConstraintBlock c = JointAt(plan, block, p);
@@ -182,6 +170,23 @@ inline void LeverArmsAndInertia(const StepPlan& plan, std::byte* block, ExactScr
                 joint.point.r2, offset);
     });
   }
+}
+
+// Each dynamic body's inverse inertia for this solve (LeverArms first): I^-1 at its current
+// rotation, or with `stiffness` > 0 (velocity phase) (I + G)^-1, where G
+// sums over the body's joints  stiffness * max(0, s lambda . r) (E - r^ r^T)
+// with lambda the joint's impulse of the last velocity solve and s = -1 on
+// body 1: the geometric stiffness of the joints' pulls (Tournier et al.,
+// "Stable Constrained Dynamics", 2015), taken implicitly. A slender link
+// pulled hard along its length by a heavy body swings transversally faster
+// than one step can follow explicitly (chain16-r100 comes apart without it
+// at 1 substep); stiffness = dt is the backward-Euler amount of it; only
+// pulls count, pushes would make I + G indefinite. Computed as
+// I^-1 (E + G I^-1)^-1, which needs no inverse of I (a zero inverse inertia
+// stays zero).
+inline void Inertia(const StepPlan& plan, std::byte* block, ExactScratch& scratch,
+                    float stiffness) {
+  const ExactSolvePlan& exact = plan.exact;
   for (std::size_t b = 0; b < plan.bodies.size(); ++b) {
     if (plan.bodies[b].motion != MotionType::kDynamic) continue;
     const BodyLanes& body = BodyAt(plan, block, b);
@@ -222,7 +227,7 @@ inline void LeverArmsAndInertia(const StepPlan& plan, std::byte* block, ExactScr
   }
 }
 
-// K from the lever arms and inverse inertias of LeverArmsAndInertia: every
+// K from the lever arms and inverse inertias of LeverArms and Inertia: every
 // joint's I^-1 [r]x (cached in its point part), the diagonal blocks and the
 // couplings through shared bodies.
 inline void AssembleK(const StepPlan& plan, std::byte* block, ExactScratch& scratch) {
@@ -370,7 +375,7 @@ HWY_INLINE void AddBodyStep(const BodyLanes& body, const Sym33Lanes& inverse_ine
 }  // namespace exact
 
 // Velocity phase: J v = 0 for every joint at once (see the header comment),
-// with the geometric stiffness `stiffness` * (pull) (LeverArmsAndInertia).
+// with the geometric stiffness `stiffness` * (pull) (Inertia).
 // The impulses are kept as the point parts' total_lambda (the next
 // substep's pulls).
 // `visit()` is called three times per joint (the step's prefetch of the next
@@ -379,7 +384,8 @@ template <class Visit>
 void ExactSolveVelocity(const StepPlan& plan, std::byte* block, ExactScratch& scratch,
                         float stiffness, Visit&& visit) {
   const ExactSolvePlan& exact = plan.exact;
-  exact::LeverArmsAndInertia(plan, block, scratch, stiffness);
+  exact::LeverArms(plan, block);
+  exact::Inertia(plan, block, scratch, stiffness);
   exact::AssembleK(plan, block, scratch);
   for (std::size_t p = 0; p < exact.joint_count(); ++p) {
     visit();
@@ -439,7 +445,7 @@ int ExactSolvePosition(const StepPlan& plan, std::byte* block, ExactScratch& scr
   int pass = 0;
   for (; pass < passes; ++pass) {
     // The mass metric (no stiffness); K only once some world has to move.
-    exact::LeverArmsAndInertia(plan, block, scratch, 0.0f);
+    exact::LeverArms(plan, block);
     ForEachChunk([&](std::size_t offset) { Store(Zero(), scratch.moving, offset); });
     for (std::size_t p = 0; p < exact.joint_count(); ++p) {
       visit();
@@ -458,6 +464,7 @@ int ExactSolvePosition(const StepPlan& plan, std::byte* block, ExactScratch& scr
       any_moving |= AnyLane(hn::Ne(Load(scratch.moving, offset), Zero()));
     });
     if (!any_moving) break;
+    exact::Inertia(plan, block, scratch, 0.0f);
     exact::AssembleK(plan, block, scratch);
     exact::Factor(exact, scratch, visit);
     exact::Solve(exact, scratch);

@@ -1,8 +1,9 @@
 // Comparing a batch lane with a reference body, shared by the tests that run
 // the batch against reference::World step by step (scene_comparison_test.cc,
-// allowed_dofs_test.cc): deviations in units of FLT_EPSILON x max(1, |value|)
-// (rotations: FLT_EPSILON, q and -q the same), and syncing a reference world
-// to a lane's state.
+// allowed_dofs_test.cc, exact_solve_test.cc): deviations in units of
+// FLT_EPSILON x max(1, |value|) (rotations: FLT_EPSILON, q and -q the same),
+// syncing a reference world to a lane's state, and kicking every world
+// differently.
 #pragma once
 
 #include <algorithm>
@@ -10,6 +11,7 @@
 #include <cfloat>
 #include <cmath>
 #include <cstddef>
+#include <vector>
 
 #include "manyworlds/batch.h"
 #include "reference/world.h"
@@ -72,6 +74,27 @@ void SetReferenceState(reference::World<T>& world, const float* lane_bodies) {
     body.linear_velocity = reference::Vec3<T>(s[7], s[8], s[9]);
     body.angular_velocity = reference::Vec3<T>(s[10], s[11], s[12]);
   }
+}
+
+// Per-world velocity kicks of up to 0.3 m/s and rad/s on every dynamic body,
+// so that the worlds of a block differ and every per-lane decision (limit
+// sides, slack or taut, deactivations, recomputes where an error is
+// non-zero, Newton steps of the exact solve) is taken differently across the
+// lanes of one vector.
+inline void KickEveryWorldDifferently(Batch& batch) {
+  const std::size_t per_world = batch.body_count() * kStateFloatsPerBody;
+  std::vector<float> state(batch.world_count() * per_world);
+  batch.GetState(state);
+  for (std::size_t w = 0; w < batch.world_count(); ++w) {
+    for (std::size_t b = 0; b < batch.body_count(); ++b) {
+      if (batch.scene().bodies()[b].motion_type != MotionType::kDynamic) continue;
+      float* body = state.data() + w * per_world + b * kStateFloatsPerBody;
+      for (int i = 7; i < 13; ++i) {
+        body[i] += 0.3f * std::sin(float(w * 13 + b * 7 + std::size_t(i)));
+      }
+    }
+  }
+  batch.SetState(state);
 }
 
 }  // namespace manyworlds

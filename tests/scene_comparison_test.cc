@@ -55,26 +55,6 @@ constexpr std::uint64_t kSeed = 7;
 using test_scenes::MixedScene;
 using test_scenes::MoreTypesScene;
 
-// Per-world velocity kicks of up to 0.3 m/s and rad/s on every dynamic body,
-// so that the worlds of a block differ and every per-lane decision (limit
-// sides, slack or taut, deactivations, recomputes where an error is
-// non-zero) is taken differently across the lanes of one vector.
-void KickEveryWorldDifferently(Batch& batch) {
-  const std::size_t per_world = batch.body_count() * kStateFloatsPerBody;
-  std::vector<float> state(batch.world_count() * per_world);
-  batch.GetState(state);
-  for (std::size_t w = 0; w < batch.world_count(); ++w) {
-    for (std::size_t b = 0; b < batch.body_count(); ++b) {
-      if (batch.scene().bodies()[b].motion_type != MotionType::kDynamic) continue;
-      float* body = state.data() + w * per_world + b * kStateFloatsPerBody;
-      for (int i = 7; i < 13; ++i) {
-        body[i] += 0.3f * std::sin(float(w * 13 + b * 7 + std::size_t(i)));
-      }
-    }
-  }
-  batch.SetState(state);
-}
-
 Scene ComparisonScene(const std::string& id) {
   if (id == "mixed") return MixedScene();
   if (id == "more_types") return MoreTypesScene();
