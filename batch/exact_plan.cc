@@ -12,23 +12,70 @@
 
 namespace manyworlds {
 
+const char* ExactRowsName(ExactRows rows) {
+  switch (rows) {
+    case ExactRows::kPoint: return "point";
+    case ExactRows::kHingeRotation: return "hinge rotation";
+    case ExactRows::kRotation: return "rotation";
+    case ExactRows::kSliderAxes: return "slider axes";
+    case ExactRows::kGear: return "gear";
+    case ExactRows::kRackAndPinion: return "rack and pinion";
+  }
+  return "?";
+}
+
+int ExactRowCount(ExactRows rows) {
+  switch (rows) {
+    case ExactRows::kPoint: case ExactRows::kRotation: return 3;
+    case ExactRows::kHingeRotation: case ExactRows::kSliderAxes: return 2;
+    case ExactRows::kGear: case ExactRows::kRackAndPinion: return 1;
+  }
+  return 0;
+}
+
 std::size_t ExactSolvePlan::fill_blocks() const {
   std::set<std::size_t> coupled;
   for (const SharedBody& shared : shared_bodies) coupled.insert(shared.block);
   return blocks.size() - coupled.size();
 }
 
+bool ExactSolvePlan::only_points() const {
+  return std::all_of(order.begin(), order.end(),
+                     [](const Group& g) { return g.rows == ExactRows::kPoint; });
+}
+
 namespace {
 
-// The joints attached to each dynamic body, as (joint, is body2).
+// The row groups of each constraint type the exact solve takes; empty for
+// the others.
+std::vector<ExactRows> GroupsOf(ConstraintType type) {
+  switch (type) {
+    case ConstraintType::kPoint: return {ExactRows::kPoint};
+    case ConstraintType::kHinge: return {ExactRows::kPoint, ExactRows::kHingeRotation};
+    case ConstraintType::kFixed: return {ExactRows::kPoint, ExactRows::kRotation};
+    case ConstraintType::kSlider: return {ExactRows::kSliderAxes, ExactRows::kRotation};
+    case ConstraintType::kGear: return {ExactRows::kGear};
+    case ConstraintType::kRackAndPinion: return {ExactRows::kRackAndPinion};
+    default: return {};
+  }
+}
+
+// The groups attached to each dynamic body, as (group, is body2).
 using Attachments = std::vector<std::vector<std::pair<std::size_t, bool>>>;
 
 std::string Unavailable(const Scene& scene, const StepPlan& plan) {
   for (std::size_t i = 0; i < plan.constraints.size(); ++i) {
     const ConstraintPlan& c = plan.constraints[i];
-    if (c.type != ConstraintType::kPoint) {
+    if (GroupsOf(c.type).empty()) {
       return c.label + " is a " + ConstraintTypeName(c.type) +
-             " constraint; the exact solve takes point constraints (ball joints) only";
+             " constraint; the exact solve takes point, hinge, fixed, slider, gear and "
+             "rack-and-pinion constraints";
+    }
+    // Limits and motors are inequality rows (bounded impulses), which a
+    // linear solve cannot hold to their bounds.
+    if (c.has_limits() || c.has_motor()) {
+      return c.label + " has " + (c.has_limits() ? "limits" : "a motor or friction") +
+             ", inequality rows the exact solve does not take yet (Gauss-Seidel does)";
     }
   }
   for (std::size_t b = 0; b < plan.bodies.size(); ++b) {
@@ -38,11 +85,12 @@ std::string Unavailable(const Scene& scene, const StepPlan& plan) {
              " restricts its allowed_dofs; the exact solve takes unrestricted bodies only";
     }
   }
-  // Two ball joints between the same two bodies (static and kinematic
-  // bodies count as one fixed frame: neither moves in the solve) leave the
-  // turn about the line through their anchors free and make their rows
-  // dependent: equal and opposite impulses along that line move nothing, so
-  // K is singular and float would factor it into arbitrary impulses.
+  // Two constraints between the same two bodies (static and kinematic
+  // bodies count as one fixed frame: neither moves in the solve) have
+  // dependent rows: two ball joints leave the turn about the line through
+  // their anchors free, and equal and opposite impulses along that line move
+  // nothing, so K is singular and float would factor it into arbitrary
+  // impulses.
   std::map<std::pair<std::size_t, std::size_t>, std::size_t> joined;
   const std::size_t kFixedFrame = plan.bodies.size();
   for (std::size_t i = 0; i < plan.constraints.size(); ++i) {
@@ -68,17 +116,22 @@ ExactSolvePlan PlanExactSolve(const Scene& scene, const StepPlan& plan) {
   exact.unavailable = Unavailable(scene, plan);
   if (!exact.available()) return exact;
 
-  const std::size_t joints = plan.constraints.size();
+  std::vector<ExactSolvePlan::Group> groups;  // in scene order
   Attachments attached(plan.bodies.size());
-  for (std::size_t j = 0; j < joints; ++j) {
-    const ConstraintPlan& c = plan.constraints[j];
-    if (c.motion1 == MotionType::kDynamic) attached[c.body1].push_back({j, false});
-    if (c.motion2 == MotionType::kDynamic) attached[c.body2].push_back({j, true});
+  for (std::size_t i = 0; i < plan.constraints.size(); ++i) {
+    const ConstraintPlan& c = plan.constraints[i];
+    for (ExactRows rows : GroupsOf(c.type)) {
+      const std::size_t g = groups.size();
+      groups.push_back({i, rows});
+      if (c.motion1 == MotionType::kDynamic) attached[c.body1].push_back({g, false});
+      if (c.motion2 == MotionType::kDynamic) attached[c.body2].push_back({g, true});
+    }
   }
+  const std::size_t group_count = groups.size();
 
-  // The joint graph, then symbolic elimination by minimum degree: eliminating
-  // a joint joins its remaining neighbours into a clique (the fill).
-  std::vector<std::set<std::size_t>> adjacent(joints);
+  // The group graph, then symbolic elimination by minimum degree: eliminating
+  // a group joins its remaining neighbours into a clique (the fill).
+  std::vector<std::set<std::size_t>> adjacent(group_count);
   for (const auto& on_body : attached) {
     for (const auto& [a, a_side] : on_body) {
       for (const auto& [b, b_side] : on_body) {
@@ -86,19 +139,21 @@ ExactSolvePlan PlanExactSolve(const Scene& scene, const StepPlan& plan) {
       }
     }
   }
-  std::vector<std::set<std::size_t>> neighbours_when_eliminated(joints);
-  std::vector<bool> eliminated(joints, false);
-  std::vector<std::size_t> position(joints);
-  for (std::size_t p = 0; p < joints; ++p) {
-    std::size_t best = joints;
-    for (std::size_t j = 0; j < joints; ++j) {
-      if (!eliminated[j] && (best == joints || adjacent[j].size() < adjacent[best].size())) {
+  std::vector<std::set<std::size_t>> neighbours_when_eliminated(group_count);
+  std::vector<bool> eliminated(group_count, false);
+  std::vector<std::size_t> position(group_count);
+  std::vector<std::size_t> order;  // group (scene order) at each position
+  for (std::size_t p = 0; p < group_count; ++p) {
+    std::size_t best = group_count;
+    for (std::size_t j = 0; j < group_count; ++j) {
+      if (!eliminated[j] && (best == group_count || adjacent[j].size() < adjacent[best].size())) {
         best = j;
       }
     }
     eliminated[best] = true;
     position[best] = p;
-    exact.order.push_back(best);
+    order.push_back(best);
+    exact.order.push_back(groups[best]);
     const std::set<std::size_t> remaining = adjacent[best];
     neighbours_when_eliminated[best] = remaining;
     for (std::size_t a : remaining) {
@@ -110,22 +165,22 @@ ExactSolvePlan PlanExactSolve(const Scene& scene, const StepPlan& plan) {
   }
 
   // Blocks in positions: every (p, later neighbour) pair, numbered once (a
-  // map: as many entries as blocks, not joints squared).
+  // map: as many entries as blocks, not groups squared).
   std::map<std::pair<std::size_t, std::size_t>, std::size_t> block_of;
   const auto block = [&](std::size_t first, std::size_t second) {
     const auto [it, added] = block_of.emplace(std::pair(first, second), exact.blocks.size());
     if (added) exact.blocks.push_back({first, second});
     return it->second;
   };
-  exact.later.resize(joints);
-  exact.updates.resize(joints);
-  for (std::size_t p = 0; p < joints; ++p) {
+  exact.later.resize(group_count);
+  exact.updates.resize(group_count);
+  for (std::size_t p = 0; p < group_count; ++p) {
     std::vector<std::size_t> later;
-    for (std::size_t j : neighbours_when_eliminated[exact.order[p]]) later.push_back(position[j]);
+    for (std::size_t j : neighbours_when_eliminated[order[p]]) later.push_back(position[j]);
     std::sort(later.begin(), later.end());
     for (std::size_t q : later) exact.later[p].push_back({q, block(p, q)});
   }
-  for (std::size_t p = 0; p < joints; ++p) {
+  for (std::size_t p = 0; p < group_count; ++p) {
     const auto& later = exact.later[p];
     for (std::size_t l = 0; l < later.size(); ++l) {
       for (std::size_t r = l; r < later.size(); ++r) {

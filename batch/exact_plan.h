@@ -1,17 +1,25 @@
 // The plan of the exact joint solve (JointSolver::kExact): which sparse
 // system every block factors, in which order, with which fill.
 //
-// The unknowns are the impulses of the scene's ball joints (three rows each).
-// Two joints couple in K = J M^-1 J^T when they share a dynamic body; static
+// The unknowns are the impulses of the scene's equality rows, in groups of
+// at most three rows (ExactRows): a ball joint is one group, a hinge two (its
+// point and its two rotation rows), a fixed constraint two, a slider two (its
+// two translation rows and its three rotation rows), a gear or a rack and
+// pinion one (a single row). A group of fewer than three rows is padded to
+// three with rows that touch nothing (K's diagonal 1 there, impulse 0), so
+// every unknown is a 3-vector and every block of K a 3x3 block.
+//
+// Two groups couple in K = J M^-1 J^T when they share a dynamic body; static
 // and kinematic bodies have infinite mass and couple nothing. All worlds have
-// the scene's joint graph, so the elimination order (greedy minimum degree,
-// ties by scene order) and the fill it causes are decided here once, and
-// every block factors its 16 lanes with the same instructions: a chain or a
-// tree eliminates leaf first with no fill at all; a closed loop adds a few
+// the scene's graph, so the elimination order (greedy minimum degree, ties by
+// scene order) and the fill it causes are decided here once, and every block
+// factors its 16 lanes with the same instructions: a chain or a tree
+// eliminates leaf first with no fill at all; a closed loop adds a few
 // off-diagonal blocks. Everything is in positions of the elimination order.
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -21,13 +29,30 @@ namespace manyworlds {
 class Scene;
 struct StepPlan;
 
+// The kinds of row group (batch/exact_rows-inl.h has each one's J and C).
+enum class ExactRows : std::uint8_t {
+  kPoint,          // 3 rows: the anchors' separation (ball, hinge, fixed)
+  kHingeRotation,  // 2 rows: the hinge axes aligned
+  kRotation,       // 3 rows: the relative rotation at rest (fixed, slider)
+  kSliderAxes,     // 2 rows: body 2's anchor on body 1's slider line
+  kGear,           // 1 row:  theta1 + r theta2 = 0
+  kRackAndPinion,  // 1 row:  theta1 - r d2 = 0
+};
+const char* ExactRowsName(ExactRows rows);
+int ExactRowCount(ExactRows rows);
+
 struct ExactSolvePlan {
   // Why the scene cannot be solved exactly (names the constraint or body);
   // empty when it can.
   std::string unavailable;
 
-  // The plan's constraint index of the joint eliminated at each position.
-  std::vector<std::size_t> order;
+  // The group eliminated at each position: its constraint (the plan's
+  // index) and which of its rows.
+  struct Group {
+    std::size_t constraint;
+    ExactRows rows;
+  };
+  std::vector<Group> order;
 
   // Off-diagonal block `block` couples positions first < second (rows of
   // `first`, columns of `second`).
@@ -36,9 +61,9 @@ struct ExactSolvePlan {
   };
   std::vector<Block> blocks;  // couplings and fill
 
-  // The terms of K's off-diagonal blocks: joints at positions first < second
-  // share the dynamic body `body`; each is that body's body1 (sign -1 in J)
-  // or body2 (+1).
+  // The terms of K's off-diagonal blocks: groups at positions first < second
+  // share the dynamic body `body`; each is that body's body1 or body2 in its
+  // constraint (for point groups the sign -1 or +1 of J).
   struct SharedBody {
     std::size_t body;
     std::size_t first, second;
@@ -63,13 +88,14 @@ struct ExactSolvePlan {
   std::vector<std::vector<Update>> updates;    // per position
 
   bool available() const { return unavailable.empty(); }
-  std::size_t joint_count() const { return order.size(); }
+  std::size_t group_count() const { return order.size(); }
+  bool only_points() const;  // every group a point group (the chains)
   std::size_t fill_blocks() const;  // blocks that are fill, not couplings
 };
 
 // Plans the exact solve of a scene CompilePlan has laid out as `plan`; a
 // scene it cannot solve gets `unavailable` (not an exception). Storage grows
-// with the blocks (couplings and fill), time with joints squared (the
+// with the blocks (couplings and fill), time with groups squared (the
 // minimum-degree search).
 ExactSolvePlan PlanExactSolve(const Scene& scene, const StepPlan& plan);
 

@@ -1,14 +1,22 @@
-// The exact joint solve across worlds (JointSolver::kExact): all ball joints
-// of a world solved at once, each block's 16 lanes with the same
-// instructions. The plan (batch/exact_plan.h) fixes the elimination order.
+// The exact joint solve across worlds (JointSolver::kExact): all equality
+// rows of a world solved at once, each block's 16 lanes with the same
+// instructions. The plan (batch/exact_plan.h) fixes the row groups and the
+// elimination order; batch/exact_rows-inl.h has each group's J and C.
 //
-// Unknowns: one impulse lambda_k (3 rows) per joint k. For joint k on body b
-// with lever arm r (world, COM to anchor) and side s = -1 (body 1) or +1
-// (body 2), J_kb = s [E, -[r]x], so with A = I_b^-1 [r]x (world inertia)
+// Unknowns: one impulse lambda_k (3 rows, padded) per group k. A group's
+// rows on body b are J_kb = [L_kb, A_kb] (linear, angular), so
+//
+//   K_kl = sum over shared dynamic bodies b of  m^-1 L_kb L_lb^T + A_kb I_b^-1 A_lb^T
+//
+// (padded rows: zero J, K's diagonal 1). For a point group (ball joint) with
+// lever arm r (world, COM to anchor) and side s = -1 (body 1) or +1 (body 2),
+// J_kb = s [E, -[r]x]; with A = I_b^-1 [r]x (world inertia)
 //
 //   K_kk = sum over its dynamic bodies of  m^-1 E + [r]x I^-1 [r]x^T
 //   K_kl = sum over shared dynamic bodies of  s_k s_l (m^-1 E - [r_k]x A_l),
-//          column c of -[r_k]x A_l being (column c of A_l) x r_k.
+//          column c of -[r_k]x A_l being (column c of A_l) x r_k,
+//
+// which the chains' point-only scenes assemble without forming J.
 //
 // Block LDL^T, right-looking, in the plan's order p = 0, 1, ...:
 //   D_p = K_pp (updated),  W_pi = D_p^-1 K_pi  for each later neighbour i,
@@ -16,21 +24,22 @@
 // Solve K lambda = b:  forward  b_i -= W_pi^T b_p  (p in order),
 //                      back     lambda_p = D_p^-1 b_p - sum_i W_pi lambda_i
 //                               (p in reverse order).
-// K is symmetric positive definite when every joint has a dynamic body and
-// no two joints' rows are dependent; a singular pivot (D_p not invertible in
-// a lane) gives that joint zero impulse in that lane, as Jolt deactivates a
-// point part whose K cannot be inverted.
+// K is symmetric positive definite when every group has a dynamic body and
+// no two groups' rows are dependent; a singular pivot (D_p not invertible in
+// a lane) gives that group zero impulse in that lane, as Jolt deactivates a
+// part whose K cannot be inverted.
 //
 // Velocity phase (replaces setup, warm start and the velocity iterations):
 //   b = -J v, lambda = K^-1 b, applied to both bodies: J v = 0 afterwards.
 //   M's rotational blocks carry the joints' geometric stiffness from the last
 //   substep's impulses (Inertia), taken implicitly.
-// Position phase (replaces the Baumgarte iterations): Newton steps on C = 0,
-//   C_k = x2 + r2 - x1 - r1 at the current poses (K re-assembled there),
-//   lambda = K^-1 (-C), applied as position and rotation steps, in each world
-//   until every |C_k| <= tolerance (at most `passes` steps). A world that
-//   has converged is left exactly as it is while others continue, so what a
-//   world does never depends on the other worlds of its block.
+// Position phase (replaces the Baumgarte iterations): Newton steps on C = 0
+//   at the current poses (J and K re-assembled there), lambda = K^-1 (-C),
+//   applied as position and rotation steps, in each world until every
+//   group's |C_k| <= tolerance (metres or radians; at most `passes` steps).
+//   A world that has converged is left exactly as it is while others
+//   continue, so what a world does never depends on the other worlds of its
+//   block.
 
 #if defined(MANYWORLDS_BATCH_EXACT_SOLVE_INL_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef MANYWORLDS_BATCH_EXACT_SOLVE_INL_H_
@@ -44,6 +53,7 @@
 
 #include "batch/constraint_block.h"
 #include "batch/exact_plan.h"
+#include "batch/exact_rows-inl.h"
 #include "kernels/lane_math-inl.h"
 #include "kernels/point-inl.h"
 
@@ -53,6 +63,12 @@ namespace HWY_NAMESPACE {
 
 // Working storage of one block's solve, kept per thread between blocks.
 struct ExactScratch {
+  // Per position, for groups other than point groups: J (GroupRows) and
+  // I^-1 A^T per side (columns: the rows' angular steps).
+  struct GroupJacobian {
+    Mat33Lanes linear[2], angular[2], inv_i_angular[2];
+  };
+  std::vector<GroupJacobian> jacobians;
   std::vector<Sym33Lanes> diagonal;  // K_pp, then D_p^-1
   std::vector<Mat33Lanes> blocks;    // K_pi, then W_pi (plan's block order)
   std::vector<Mat33Lanes> w;         // W of the position being eliminated
@@ -68,9 +84,10 @@ struct ExactScratch {
     rotation.resize(step_plan.bodies.size());
     inverse_inertia.resize(step_plan.bodies.size());
     stiffness.resize(step_plan.bodies.size());
-    diagonal.resize(plan.joint_count());
+    diagonal.resize(plan.group_count());
     blocks.resize(plan.blocks.size());
-    rhs.resize(plan.joint_count());
+    rhs.resize(plan.group_count());
+    jacobians.resize(plan.only_points() ? 0 : plan.group_count());
     std::size_t widest = 0;
     for (const auto& later : plan.later) widest = later.size() > widest ? later.size() : widest;
     w.resize(widest);
@@ -79,8 +96,12 @@ struct ExactScratch {
 
 namespace exact {
 
-HWY_INLINE ConstraintBlock JointAt(const StepPlan& plan, std::byte* block, std::size_t position) {
-  return ConstraintInBlock(plan, plan.exact.order[position], block);
+HWY_INLINE ConstraintBlock GroupAt(const StepPlan& plan, std::byte* block, std::size_t position) {
+  return ConstraintInBlock(plan, plan.exact.order[position].constraint, block);
+}
+
+HWY_INLINE bool IsPoint(const ExactSolvePlan& exact, std::size_t position) {
+  return exact.order[position].rows == ExactRows::kPoint;
 }
 
 // a^T b.
@@ -154,28 +175,52 @@ HWY_INLINE void AddTransverseStiffness(LaneVec w, const Vec3& r, Sym33& g) {
   g.yz = hn::NegMulAdd(hn::Mul(r.y, r.z), scale, g.yz);
 }
 
-// The lever arms r1, r2 of every joint at the current rotations, cached in
-// its point part.
+// The lever arms r1, r2 of every point group at the current rotations,
+// cached in its point part.
 inline void LeverArms(const StepPlan& plan, std::byte* block) {
   const ExactSolvePlan& exact = plan.exact;
-  for (std::size_t p = 0; p < exact.joint_count(); ++p) {
-    const ConstraintBlock c = JointAt(plan, block, p);
-    auto& joint = c.Main<PointConstraintLanes>();
+  for (std::size_t p = 0; p < exact.group_count(); ++p) {
+    if (!IsPoint(exact, p)) continue;
+    const ConstraintBlock c = GroupAt(plan, block, p);
+    const PointGeometry& anchors = PointAnchors(c);
+    PointLanes& part = PointPart(c);
     ForEachChunk([&](std::size_t offset) {
       StoreVec3(Rotate(LoadQuat(c.bodies.body1->rotation, offset),
-                       LoadVec3(joint.anchors.r1_local, offset)),
-                joint.point.r1, offset);
+                       LoadVec3(anchors.r1_local, offset)),
+                part.r1, offset);
       StoreVec3(Rotate(LoadQuat(c.bodies.body2->rotation, offset),
-                       LoadVec3(joint.anchors.r2_local, offset)),
-                joint.point.r2, offset);
+                       LoadVec3(anchors.r2_local, offset)),
+                part.r2, offset);
+    });
+  }
+}
+
+HWY_INLINE void StoreRows(const GroupRows& rows, ExactScratch::GroupJacobian& jacobian,
+                          std::size_t offset) {
+  for (int side = 0; side < 2; ++side) {
+    StoreMat33(rows.linear[side], jacobian.linear[side], offset);
+    StoreMat33(rows.angular[side], jacobian.angular[side], offset);
+  }
+}
+
+// The rows of every group other than the point groups at the current poses
+// (velocity phase: no C needed).
+inline void GroupJacobians(const StepPlan& plan, std::byte* block, ExactScratch& scratch) {
+  const ExactSolvePlan& exact = plan.exact;
+  for (std::size_t p = 0; p < exact.group_count(); ++p) {
+    if (IsPoint(exact, p)) continue;
+    const ConstraintBlock c = GroupAt(plan, block, p);
+    ForEachChunk([&](std::size_t offset) {
+      StoreRows(RowsOfChunk(plan, c, exact.order[p].rows, false, offset), scratch.jacobians[p],
+                offset);
     });
   }
 }
 
 // Each dynamic body's inverse inertia for this solve (LeverArms first): I^-1 at its current
 // rotation, or with `stiffness` > 0 (velocity phase) (I + G)^-1, where G
-// sums over the body's joints  stiffness * max(0, s lambda . r) (E - r^ r^T)
-// with lambda the joint's impulse of the last velocity solve and s = -1 on
+// sums over the body's point groups  stiffness * max(0, s lambda . r) (E - r^ r^T)
+// with lambda the group's impulse of the last velocity solve and s = -1 on
 // body 1: the geometric stiffness of the joints' pulls (Tournier et al.,
 // "Stable Constrained Dynamics", 2015), taken implicitly. A slender link
 // pulled hard along its length by a heavy body swings transversally faster
@@ -183,7 +228,8 @@ inline void LeverArms(const StepPlan& plan, std::byte* block) {
 // at 1 substep); stiffness = dt is the backward-Euler amount of it; only
 // pulls count, pushes would make I + G indefinite. Computed as
 // I^-1 (E + G I^-1)^-1, which needs no inverse of I (a zero inverse inertia
-// stays zero).
+// stays zero). The other groups' rows (a slider's, a hinge's rotation rows)
+// add no stiffness.
 inline void Inertia(const StepPlan& plan, std::byte* block, ExactScratch& scratch,
                     float stiffness) {
   const ExactSolvePlan& exact = plan.exact;
@@ -197,10 +243,10 @@ inline void Inertia(const StepPlan& plan, std::byte* block, ExactScratch& scratc
   }
   if (stiffness <= 0.0f) return;
   const LaneVec factor = Splat(stiffness);
-  for (std::size_t p = 0; p < exact.joint_count(); ++p) {
-    const ConstraintBlock c = JointAt(plan, block, p);
-    const ConstraintPlan& joint_plan = plan.constraints[exact.order[p]];
-    const PointLanes& part = c.Main<PointConstraintLanes>().point;
+  for (std::size_t p = 0; p < exact.group_count(); ++p) {
+    if (!IsPoint(exact, p)) continue;
+    const ConstraintBlock c = GroupAt(plan, block, p);
+    const PointLanes& part = PointPart(c);
     ForEachChunk([&](std::size_t offset) {
       const Vec3 lambda = LoadVec3(part.persistent.total_lambda, offset);
       const auto add = [&](std::size_t body, const Vec3Lanes& lever, bool body2) {
@@ -210,8 +256,8 @@ inline void Inertia(const StepPlan& plan, std::byte* block, ExactScratch& scratc
         AddTransverseStiffness(hn::Mul(factor, hn::Max(pull, Zero())), r, g);
         StoreSym33(g, scratch.stiffness[body], offset);
       };
-      if (c.bodies.motion1 == MotionType::kDynamic) add(joint_plan.body1, part.r1, false);
-      if (c.bodies.motion2 == MotionType::kDynamic) add(joint_plan.body2, part.r2, true);
+      if (c.bodies.motion1 == MotionType::kDynamic) add(c.plan.body1, part.r1, false);
+      if (c.bodies.motion2 == MotionType::kDynamic) add(c.plan.body2, part.r2, true);
     });
   }
   for (std::size_t b = 0; b < plan.bodies.size(); ++b) {
@@ -227,15 +273,76 @@ inline void Inertia(const StepPlan& plan, std::byte* block, ExactScratch& scratc
   }
 }
 
-// K from the lever arms and inverse inertias of LeverArms and Inertia: every
-// joint's I^-1 [r]x (cached in its point part), the diagonal blocks and the
+// m^-1 L_a L_b^T + A_a (I^-1 A_b^T): how the rows a and b couple through one
+// body (inv_i_angular_b holds I^-1 A_b^T).
+HWY_INLINE Mat33 Coupling(LaneVec inv_mass, const Mat33& linear_a, const Mat33& angular_a,
+                          const Mat33& linear_b, const Mat33& inv_i_angular_b) {
+  Mat33 k;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      k.m[i][j] = hn::MulAdd(inv_mass, Dot(Row(linear_a, i), Row(linear_b, j)),
+                             Dot(Row(angular_a, i), Column(inv_i_angular_b, j)));
+    }
+  }
+  return k;
+}
+
+// One side of the group at `position` as general rows (LeverArms, and
+// AssembleK's diagonal pass, first).
+HWY_INLINE void GroupSide(const StepPlan& plan, std::byte* block, const ExactScratch& scratch,
+                          std::size_t position, bool body2, std::size_t offset, Mat33& linear,
+                          Mat33& angular, Mat33& inv_i_angular) {
+  const int side = body2 ? 1 : 0;
+  if (IsPoint(plan.exact, position)) {
+    PointSide(PointPart(GroupAt(plan, block, position)), side, offset, linear, angular,
+              inv_i_angular);
+    return;
+  }
+  const ExactScratch::GroupJacobian& jacobian = scratch.jacobians[position];
+  linear = LoadMat33(jacobian.linear[side], offset);
+  angular = LoadMat33(jacobian.angular[side], offset);
+  inv_i_angular = LoadMat33(jacobian.inv_i_angular[side], offset);
+}
+
+// K from the lever arms, the other groups' rows (GroupJacobians) and the
+// inverse inertias of Inertia: every point group's I^-1 [r]x (cached in its
+// point part) and every other group's I^-1 A^T, the diagonal blocks and the
 // couplings through shared bodies.
 inline void AssembleK(const StepPlan& plan, std::byte* block, ExactScratch& scratch) {
   const ExactSolvePlan& exact = plan.exact;
-  for (std::size_t p = 0; p < exact.joint_count(); ++p) {
-    const ConstraintBlock c = JointAt(plan, block, p);
-    const ConstraintPlan& joint_plan = plan.constraints[exact.order[p]];
-    PointLanes& part = c.Main<PointConstraintLanes>().point;
+  for (std::size_t p = 0; p < exact.group_count(); ++p) {
+    const ConstraintBlock c = GroupAt(plan, block, p);
+    if (!IsPoint(exact, p)) {
+      const int rows = ExactRowCount(exact.order[p].rows);
+      ExactScratch::GroupJacobian& jacobian = scratch.jacobians[p];
+      ForEachChunk([&](std::size_t offset) {
+        Mat33 k = ZeroMat33();
+        for (int side = 0; side < 2; ++side) {
+          const std::size_t body = side == 1 ? c.plan.body2 : c.plan.body1;
+          Mat33 inv_i_angular = ZeroMat33();
+          if ((side == 1 ? c.bodies.motion2 : c.bodies.motion1) == MotionType::kDynamic) {
+            const Mat33 linear = LoadMat33(jacobian.linear[side], offset);
+            const Mat33 angular = LoadMat33(jacobian.angular[side], offset);
+            const Sym33 inverse_inertia = LoadSym33(scratch.inverse_inertia[body], offset);
+            for (int r = 0; r < 3; ++r) {
+              const Vec3 step = Multiply(inverse_inertia, Row(angular, r));
+              inv_i_angular.m[0][r] = step.x, inv_i_angular.m[1][r] = step.y;
+              inv_i_angular.m[2][r] = step.z;
+            }
+            const Mat33 term = Coupling(Load(BodyAt(plan, block, body).inv_mass, offset), linear,
+                                        angular, linear, inv_i_angular);
+            for (int i = 0; i < 3; ++i) {
+              for (int j = 0; j < 3; ++j) k.m[i][j] = hn::Add(k.m[i][j], term.m[i][j]);
+            }
+          }
+          StoreMat33(inv_i_angular, jacobian.inv_i_angular[side], offset);
+        }
+        for (int r = rows; r < 3; ++r) k.m[r][r] = Splat(1.0f);  // padding
+        StoreSym33(UpperTriangle(k), scratch.diagonal[p], offset);
+      });
+      continue;
+    }
+    PointLanes& part = PointPart(c);
     ForEachChunk([&](std::size_t offset) {
       Sym33 k = ZeroSym33();
       const auto side = [&](std::size_t body, MotionType motion, const Vec3Lanes& lever,
@@ -249,8 +356,8 @@ inline void AssembleK(const StepPlan& plan, std::byte* block, ExactScratch& scra
         }
         StoreMat33(a, cache, offset);
       };
-      side(joint_plan.body1, c.bodies.motion1, part.r1, part.inv_i1_r1_cross);
-      side(joint_plan.body2, c.bodies.motion2, part.r2, part.inv_i2_r2_cross);
+      side(c.plan.body1, c.bodies.motion1, part.r1, part.inv_i1_r1_cross);
+      side(c.plan.body2, c.bodies.motion2, part.r2, part.inv_i2_r2_cross);
       StoreSym33(k, scratch.diagonal[p], offset);
     });
   }
@@ -258,12 +365,29 @@ inline void AssembleK(const StepPlan& plan, std::byte* block, ExactScratch& scra
     ForEachChunk([&](std::size_t offset) { StoreMat33(ZeroMat33(), b, offset); });
   }
   for (const ExactSolvePlan::SharedBody& shared : exact.shared_bodies) {
-    const PointLanes& first = JointAt(plan, block, shared.first).Main<PointConstraintLanes>().point;
-    const PointLanes& second =
-        JointAt(plan, block, shared.second).Main<PointConstraintLanes>().point;
     const BodyLanes& body = BodyAt(plan, block, shared.body);
-    const bool same_sign = shared.first_is_body2 == shared.second_is_body2;
     Mat33Lanes& out = scratch.blocks[shared.block];
+    if (!IsPoint(exact, shared.first) || !IsPoint(exact, shared.second)) {
+      ForEachChunk([&](std::size_t offset) {
+        Mat33 linear_first, angular_first, unused, linear_second, angular_second,
+            inv_i_angular_second;
+        GroupSide(plan, block, scratch, shared.first, shared.first_is_body2, offset,
+                  linear_first, angular_first, unused);
+        GroupSide(plan, block, scratch, shared.second, shared.second_is_body2, offset,
+                  linear_second, angular_second, inv_i_angular_second);
+        const Mat33 term = Coupling(Load(body.inv_mass, offset), linear_first, angular_first,
+                                    linear_second, inv_i_angular_second);
+        Mat33 coupling = LoadMat33(out, offset);
+        for (int i = 0; i < 3; ++i) {
+          for (int j = 0; j < 3; ++j) coupling.m[i][j] = hn::Add(coupling.m[i][j], term.m[i][j]);
+        }
+        StoreMat33(coupling, out, offset);
+      });
+      continue;
+    }
+    const PointLanes& first = PointPart(GroupAt(plan, block, shared.first));
+    const PointLanes& second = PointPart(GroupAt(plan, block, shared.second));
+    const bool same_sign = shared.first_is_body2 == shared.second_is_body2;
     ForEachChunk([&](std::size_t offset) {
       Vec3 r_first, r_second;
       Mat33 a_first, a_second;
@@ -286,10 +410,10 @@ inline void AssembleK(const StepPlan& plan, std::byte* block, ExactScratch& scra
   }
 }
 
-// LDL^T in place: diagonal -> D^-1, blocks -> W. visit() once per joint.
+// LDL^T in place: diagonal -> D^-1, blocks -> W. visit() once per group.
 template <class Visit>
 void Factor(const ExactSolvePlan& exact, ExactScratch& scratch, Visit&& visit) {
-  for (std::size_t p = 0; p < exact.joint_count(); ++p) {
+  for (std::size_t p = 0; p < exact.group_count(); ++p) {
     visit();
     const auto& later = exact.later[p];
     ForEachChunk([&](std::size_t offset) {
@@ -320,8 +444,8 @@ void Factor(const ExactSolvePlan& exact, ExactScratch& scratch, Visit&& visit) {
 
 // rhs -> K^-1 rhs with the factors of Factor.
 inline void Solve(const ExactSolvePlan& exact, ExactScratch& scratch) {
-  const std::size_t joints = exact.joint_count();
-  for (std::size_t p = 0; p < joints; ++p) {
+  const std::size_t groups = exact.group_count();
+  for (std::size_t p = 0; p < groups; ++p) {
     ForEachChunk([&](std::size_t offset) {
       const Vec3 b_p = LoadVec3(scratch.rhs[p], offset);
       for (const ExactSolvePlan::Neighbour& n : exact.later[p]) {
@@ -332,7 +456,7 @@ inline void Solve(const ExactSolvePlan& exact, ExactScratch& scratch) {
       }
     });
   }
-  for (std::size_t p = joints; p-- > 0;) {
+  for (std::size_t p = groups; p-- > 0;) {
     ForEachChunk([&](std::size_t offset) {
       Vec3 lambda = Multiply(LoadSym33(scratch.diagonal[p], offset), LoadVec3(scratch.rhs[p], offset));
       for (const ExactSolvePlan::Neighbour& n : exact.later[p]) {
@@ -344,9 +468,9 @@ inline void Solve(const ExactSolvePlan& exact, ExactScratch& scratch) {
   }
 }
 
-// The anchors' separation C = p2 - p1 with the lever arms AssembleK cached.
+// The anchors' separation C = p2 - p1 with the lever arms LeverArms cached.
 HWY_INLINE Vec3 Separation(const ConstraintBlock& c, std::size_t offset) {
-  const PointLanes& part = c.Main<PointConstraintLanes>().point;
+  const PointLanes& part = PointPart(c);
   const Vec3 p1 = Add(LoadVec3(c.bodies.body1->position, offset), LoadVec3(part.r1, offset));
   const Vec3 p2 = Add(LoadVec3(c.bodies.body2->position, offset), LoadVec3(part.r2, offset));
   return Sub(p2, p1);
@@ -372,25 +496,74 @@ HWY_INLINE void AddBodyStep(const BodyLanes& body, const Sym33Lanes& inverse_ine
             rotation, offset);
 }
 
+// The impulse lambda of a group other than a point group on one side's
+// dynamic body: linear m^-1 L^T lambda, angular I^-1 A^T lambda.
+HWY_INLINE void GroupStep(const ExactScratch::GroupJacobian& jacobian, int side,
+                          LaneVec inv_mass, const Vec3& lambda, std::size_t offset,
+                          Vec3& linear, Vec3& angular) {
+  linear = Scale(TransposeTimes(LoadMat33(jacobian.linear[side], offset), lambda), inv_mass);
+  angular = Multiply(LoadMat33(jacobian.inv_i_angular[side], offset), lambda);
+}
+
+// Calls apply(body index, body, linear step, angular step, offset) for each
+// dynamic body of the group at `position` (not a point group), with the steps
+// of the impulse Solve left in rhs.
+template <class Apply>
+void ForEachGroupBodyStep(const StepPlan& plan, std::byte* block, const ExactScratch& scratch,
+                          std::size_t position, Apply&& apply) {
+  const ConstraintBlock c = GroupAt(plan, block, position);
+  const ExactScratch::GroupJacobian& jacobian = scratch.jacobians[position];
+  ForEachChunk([&](std::size_t offset) {
+    const Vec3 lambda = LoadVec3(scratch.rhs[position], offset);
+    for (int side = 0; side < 2; ++side) {
+      if ((side == 1 ? c.bodies.motion2 : c.bodies.motion1) != MotionType::kDynamic) continue;
+      const std::size_t b = side == 1 ? c.plan.body2 : c.plan.body1;
+      BodyLanes& body = side == 1 ? *c.bodies.body2 : *c.bodies.body1;
+      Vec3 linear, angular;
+      GroupStep(jacobian, side, Load(body.inv_mass, offset), lambda, offset, linear, angular);
+      apply(b, body, linear, angular, offset);
+    }
+  });
+}
+
 }  // namespace exact
 
-// Velocity phase: J v = 0 for every joint at once (see the header comment),
+// Velocity phase: J v = 0 for every group at once (see the header comment),
 // with the geometric stiffness `stiffness` * (pull) (Inertia).
-// The impulses are kept as the point parts' total_lambda (the next
-// substep's pulls).
-// `visit()` is called three times per joint (the step's prefetch of the next
+// The point groups' impulses are kept as their parts' total_lambda (the
+// next substep's pulls).
+// `visit()` is called three times per group (the step's prefetch of the next
 // block, spread thin so that its requests never queue up).
 template <class Visit>
 void ExactSolveVelocity(const StepPlan& plan, std::byte* block, ExactScratch& scratch,
                         float stiffness, Visit&& visit) {
   const ExactSolvePlan& exact = plan.exact;
+  exact::HingeTurns(plan, block);
   exact::LeverArms(plan, block);
+  exact::GroupJacobians(plan, block, scratch);
   exact::Inertia(plan, block, scratch, stiffness);
   exact::AssembleK(plan, block, scratch);
-  for (std::size_t p = 0; p < exact.joint_count(); ++p) {
+  for (std::size_t p = 0; p < exact.group_count(); ++p) {
     visit();
-    const ConstraintBlock c = exact::JointAt(plan, block, p);
-    const PointLanes& part = c.Main<PointConstraintLanes>().point;
+    const ConstraintBlock c = exact::GroupAt(plan, block, p);
+    if (!exact::IsPoint(exact, p)) {
+      const ExactScratch::GroupJacobian& jacobian = scratch.jacobians[p];
+      ForEachChunk([&](std::size_t offset) {
+        // b = -J v
+        Vec3 b = ZeroVec3();
+        for (int side = 0; side < 2; ++side) {
+          if ((side == 1 ? c.bodies.motion2 : c.bodies.motion1) == MotionType::kStatic) continue;
+          const BodyLanes& body = side == 1 ? *c.bodies.body2 : *c.bodies.body1;
+          b = Sub(b, Multiply(LoadMat33(jacobian.linear[side], offset),
+                              LoadVec3(body.linear_velocity, offset)));
+          b = Sub(b, Multiply(LoadMat33(jacobian.angular[side], offset),
+                              LoadVec3(body.angular_velocity, offset)));
+        }
+        StoreVec3(b, scratch.rhs[p], offset);
+      });
+      continue;
+    }
+    const PointLanes& part = exact::PointPart(c);
     ForEachChunk([&](std::size_t offset) {
       // b = -J v = v1 + w1 x r1 ... written as the point part's s.
       Vec3 s = ZeroVec3();
@@ -408,25 +581,31 @@ void ExactSolveVelocity(const StepPlan& plan, std::byte* block, ExactScratch& sc
   }
   exact::Factor(exact, scratch, visit);
   exact::Solve(exact, scratch);
-  for (std::size_t p = 0; p < exact.joint_count(); ++p) {
+  for (std::size_t p = 0; p < exact.group_count(); ++p) {
     visit();
-    const ConstraintBlock c = exact::JointAt(plan, block, p);
-    const ConstraintPlan& joint = plan.constraints[exact.order[p]];
-    PointLanes& part = c.Main<PointConstraintLanes>().point;
+    const ConstraintBlock c = exact::GroupAt(plan, block, p);
+    if (!exact::IsPoint(exact, p)) {
+      exact::ForEachGroupBodyStep(
+          plan, block, scratch, p,
+          [](std::size_t, BodyLanes& body, const Vec3& linear, const Vec3& angular,
+             std::size_t offset) { AddVelocityStep(body, linear, angular, offset); });
+      continue;
+    }
+    PointLanes& part = exact::PointPart(c);
     ForEachChunk([&](std::size_t offset) {
       const Vec3 lambda = LoadVec3(scratch.rhs[p], offset);
       StoreVec3(lambda, part.persistent.total_lambda, offset);
       if (c.bodies.motion1 == MotionType::kDynamic) {
         BodyLanes& body = *c.bodies.body1;
         AddVelocityStep(body, Scale(lambda, hn::Neg(Load(body.inv_mass, offset))),
-                        Neg(exact::AngularStep(scratch.inverse_inertia[joint.body1],
+                        Neg(exact::AngularStep(scratch.inverse_inertia[c.plan.body1],
                                                LoadVec3(part.r1, offset), lambda, offset)),
                         offset);
       }
       if (c.bodies.motion2 == MotionType::kDynamic) {
         BodyLanes& body = *c.bodies.body2;
         AddVelocityStep(body, Scale(lambda, Load(body.inv_mass, offset)),
-                        exact::AngularStep(scratch.inverse_inertia[joint.body2],
+                        exact::AngularStep(scratch.inverse_inertia[c.plan.body2],
                                            LoadVec3(part.r2, offset), lambda, offset),
                         offset);
       }
@@ -434,7 +613,7 @@ void ExactSolveVelocity(const StepPlan& plan, std::byte* block, ExactScratch& sc
   }
 }
 
-// Position phase: Newton steps until each world's joints are within
+// Position phase: Newton steps until each world's groups are within
 // `tolerance`, at most `passes`. Returns the number of steps taken (by the
 // slowest world of the block).
 template <class Visit>
@@ -447,14 +626,23 @@ int ExactSolvePosition(const StepPlan& plan, std::byte* block, ExactScratch& scr
     // The mass metric (no stiffness); K only once some world has to move.
     exact::LeverArms(plan, block);
     ForEachChunk([&](std::size_t offset) { Store(Zero(), scratch.moving, offset); });
-    for (std::size_t p = 0; p < exact.joint_count(); ++p) {
+    for (std::size_t p = 0; p < exact.group_count(); ++p) {
       visit();
-      const ConstraintBlock c = exact::JointAt(plan, block, p);
+      const ConstraintBlock c = exact::GroupAt(plan, block, p);
+      const bool point = exact::IsPoint(exact, p);
       ForEachChunk([&](std::size_t offset) {
-        const Vec3 separation = exact::Separation(c, offset);
-        StoreVec3(Neg(separation), scratch.rhs[p], offset);
-        // NaN separations count as not converged (the comparison is false).
-        const LaneMask within = hn::Le(LengthSquared(separation), tolerance_squared);
+        Vec3 error;
+        if (point) {
+          error = exact::Separation(c, offset);
+        } else {
+          const exact::GroupRows rows =
+              exact::RowsOfChunk(plan, c, exact.order[p].rows, true, offset);
+          exact::StoreRows(rows, scratch.jacobians[p], offset);
+          error = rows.error;
+        }
+        StoreVec3(Neg(error), scratch.rhs[p], offset);
+        // NaN errors count as not converged (the comparison is false).
+        const LaneMask within = hn::Le(LengthSquared(error), tolerance_squared);
         const LaneVec moving = hn::IfThenZeroElse(within, Splat(1.0f));
         Store(hn::Max(Load(scratch.moving, offset), moving), scratch.moving, offset);
       });
@@ -468,8 +656,8 @@ int ExactSolvePosition(const StepPlan& plan, std::byte* block, ExactScratch& scr
     exact::AssembleK(plan, block, scratch);
     exact::Factor(exact, scratch, visit);
     exact::Solve(exact, scratch);
-    // One Newton step moves each body once, by the sum of its joints'
-    // steps (as J^T lambda): rotation steps applied joint after joint would
+    // One Newton step moves each body once, by the sum of its groups'
+    // steps (as J^T lambda): rotation steps applied group after group would
     // compose, and a link's two nearly opposite turns would not cancel.
     for (Vec3Lanes& sum : scratch.translation) {
       ForEachChunk([&](std::size_t offset) { StoreVec3(ZeroVec3(), sum, offset); });
@@ -477,23 +665,34 @@ int ExactSolvePosition(const StepPlan& plan, std::byte* block, ExactScratch& scr
     for (Vec3Lanes& sum : scratch.rotation) {
       ForEachChunk([&](std::size_t offset) { StoreVec3(ZeroVec3(), sum, offset); });
     }
-    for (std::size_t p = 0; p < exact.joint_count(); ++p) {
+    for (std::size_t p = 0; p < exact.group_count(); ++p) {
       visit();
-      const ConstraintBlock c = exact::JointAt(plan, block, p);
-      const ConstraintPlan& joint = plan.constraints[exact.order[p]];
-      const PointLanes& part = c.Main<PointConstraintLanes>().point;
+      const ConstraintBlock c = exact::GroupAt(plan, block, p);
+      if (!exact::IsPoint(exact, p)) {
+        exact::ForEachGroupBodyStep(
+            plan, block, scratch, p,
+            [&](std::size_t b, BodyLanes&, const Vec3& linear, const Vec3& angular,
+                std::size_t offset) {
+              StoreVec3(Add(LoadVec3(scratch.translation[b], offset), linear),
+                        scratch.translation[b], offset);
+              StoreVec3(Add(LoadVec3(scratch.rotation[b], offset), angular), scratch.rotation[b],
+                        offset);
+            });
+        continue;
+      }
+      const PointLanes& part = exact::PointPart(c);
       ForEachChunk([&](std::size_t offset) {
         const Vec3 lambda = LoadVec3(scratch.rhs[p], offset);
         if (c.bodies.motion1 == MotionType::kDynamic) {
-          exact::AddBodyStep(*c.bodies.body1, scratch.inverse_inertia[joint.body1], Splat(-1.0f),
+          exact::AddBodyStep(*c.bodies.body1, scratch.inverse_inertia[c.plan.body1], Splat(-1.0f),
                              LoadVec3(part.r1, offset), lambda,
-                             scratch.translation[joint.body1], scratch.rotation[joint.body1],
+                             scratch.translation[c.plan.body1], scratch.rotation[c.plan.body1],
                              offset);
         }
         if (c.bodies.motion2 == MotionType::kDynamic) {
-          exact::AddBodyStep(*c.bodies.body2, scratch.inverse_inertia[joint.body2], Splat(1.0f),
+          exact::AddBodyStep(*c.bodies.body2, scratch.inverse_inertia[c.plan.body2], Splat(1.0f),
                              LoadVec3(part.r2, offset), lambda,
-                             scratch.translation[joint.body2], scratch.rotation[joint.body2],
+                             scratch.translation[c.plan.body2], scratch.rotation[c.plan.body2],
                              offset);
         }
       });

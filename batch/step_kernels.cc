@@ -7,9 +7,9 @@
 //     4. velocity iterations, until none of the block's worlds applied an impulse
 //     5. integration                                    (dynamic and kinematic)
 //     6. position iterations, until none moved
-//   With JointSolver::kExact, 2-4 are one exact solve of every joint's
-//   velocity rows and 6 Newton steps of the same system per world until its
-//   joints are within the tolerance (batch/exact_solve-inl.h).
+//   With JointSolver::kExact, 2-4 are one exact solve of every equality
+//   row's velocity and 6 Newton steps of the same system per world until its
+//   rows are within the tolerance (batch/exact_solve-inl.h).
 //   forces and torques cleared; the health of every world checked (non-finite
 //   state, velocity overflow in the force step, coordinates out of range).
 //
@@ -174,16 +174,17 @@ bool StepBlockWith(const StepPlan& plan, std::byte* block, const std::byte* next
                    const StepParams& params, Clock& clock) {
   clock.Start();
   const std::size_t constraint_count = plan.constraints.size();
-  // The exact solve visits each joint three times in its velocity solve
-  // and three times per Newton step, whose number is known only as they
-  // converge: its prefetch is spread over the velocity solve and the first
-  // Newton step.
+  // The exact solve visits each row group three times in its velocity
+  // solve and three times per Newton step, whose number is known only as
+  // they converge: its prefetch is spread over the velocity solve and the
+  // first Newton step.
   const bool exact = params.solver == JointSolver::kExact && constraint_count != 0;
-  const int visits_per_constraint =
-      exact ? 6 : 2 + params.velocity_iterations + params.position_iterations;
-  NextBlockPrefetch prefetch(
-      next_block, plan.block_bytes,
-      std::max<std::size_t>(1, constraint_count) * static_cast<std::size_t>(visits_per_constraint));
+  const std::size_t visits =
+      exact ? 6 * plan.exact.group_count()
+            : std::max<std::size_t>(1, constraint_count) *
+                  static_cast<std::size_t>(2 + params.velocity_iterations +
+                                           params.position_iterations);
+  NextBlockPrefetch prefetch(next_block, plan.block_bytes, visits);
   // Views of the plan's constraints in this block, in solve order: a few
   // offsets each, so built per pass rather than allocated per block.
   const auto for_each_constraint = [&](auto&& verb) {

@@ -2,20 +2,20 @@
 // solve: the oracle of batch/exact_solve-inl.h, which factors the same
 // system sparsely in float.
 //
-// For the world's ball joints k (lever arms r1, r2 from the COMs at the
-// current rotations, anchors p1 = x1 + r1, p2 = x2 + r2) and its dynamic
-// bodies, J has the rows of C = p2 - p1: body 1 [-E, [r1]x], body 2
-// [E, -[r2]x] (columns linear then angular velocity). Static and kinematic
-// bodies are not unknowns (infinite mass); a kinematic body's velocity still
-// enters J v. K = J M^-1 J^T, dense, factored by Eigen's LDL^T.
+// The world's equality rows come as row groups (reference/exact_rows.h, J
+// and C at the current poses; a function called whenever the poses have
+// changed). J's columns are the dynamic bodies' linear then angular
+// velocities; static and kinematic bodies are not unknowns (infinite mass),
+// though a kinematic body's velocity still enters J v. K = J M^-1 J^T,
+// dense, factored by Eigen's LDL^T.
 //
 //   velocity:  lambda = K^-1 (-J v), v += M^-1 J^T lambda   (then J v = 0),
 //              with each dynamic body's I replaced by I + G, G summing over
-//              its joints  stiffness * max(0, s lambda_prev . r) (E - r^ r^T)
-//              (s = -1 on body 1, lambda_prev the joint's impulse of the last
+//              its point groups  stiffness * max(0, s lambda_prev . r) (E - r^ r^T)
+//              (s = -1 on body 1, lambda_prev the group's impulse of the last
 //              velocity solve, kept in `impulses`): the implicit geometric
 //              stiffness of batch/exact_solve-inl.h
-//   position:  up to `passes` times, while some |C_k| > tolerance:
+//   position:  up to `passes` times, while some group's |C| > tolerance:
 //              lambda = K^-1 (-C) at the current poses,
 //              x += m^-1 (J^T lambda)_linear,
 //              q <- AddRotationStep(q, I^-1 (J^T lambda)_angular)
@@ -25,11 +25,12 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 #include "reference/body.h"
+#include "reference/exact_rows.h"
 #include "reference/math.h"
-#include "reference/point_constraint.h"
 
 namespace manyworlds::reference {
 
@@ -38,32 +39,38 @@ class ExactJointSolve {
  public:
   using Matrix = Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic>;
   using Vector = Eigen::Matrix<T, Eigen::Dynamic, 1>;
+  using Rows = std::function<std::vector<ExactRowGroup<T>>()>;
 
-  // `impulses`: one per joint, the last velocity solve's, updated by
-  // SolveVelocity (zero at first).
-  ExactJointSolve(std::vector<Body<T>>& bodies, std::vector<const PointConstraint<T>*> joints,
-                  std::vector<Vec3<T>>& impulses, T stiffness)
-      : bodies_(bodies), joints_(std::move(joints)), impulses_(impulses), stiffness_(stiffness),
+  // `impulses`: one per group, the last velocity solve's (zero at first),
+  // updated by SolveVelocity for point groups.
+  ExactJointSolve(std::vector<Body<T>>& bodies, Rows rows, std::vector<Vec3<T>>& impulses,
+                  T stiffness)
+      : bodies_(bodies), rows_(std::move(rows)), impulses_(impulses), stiffness_(stiffness),
         column_(bodies.size(), kNotUnknown) {
-    impulses_.resize(joints_.size(), Vec3<T>::Zero());
     for (std::size_t b = 0; b < bodies_.size(); ++b) {
       if (bodies_[b].IsDynamic()) column_[b] = 6 * dynamic_++;
     }
   }
 
   void SolveVelocity() {
-    const Geometry g = Assemble(stiffness_);
-    Vector b(3 * joints_.size());
-    for (std::size_t k = 0; k < joints_.size(); ++k) {
-      const PointConstraint<T>& joint = *joints_[k];
-      const Body<T>& body1 = bodies_[joint.body1()];
-      const Body<T>& body2 = bodies_[joint.body2()];
-      const Vec3<T> v1 = body1.LinearVelocity() + body1.AngularVelocity().cross(g.r1[k]);
-      const Vec3<T> v2 = body2.LinearVelocity() + body2.AngularVelocity().cross(g.r2[k]);
-      b.template segment<3>(3 * k) = v1 - v2;  // -J v
+    const Geometry g = Assemble(rows_(), stiffness_);
+    // -J v, kinematic bodies' velocities included.
+    Vector b = Vector::Zero(g.j.rows());
+    std::size_t row = 0;
+    for (const ExactRowGroup<T>& group : g.groups) {
+      const Body<T>& body1 = bodies_[group.body1];
+      const Body<T>& body2 = bodies_[group.body2];
+      for (const ExactRow<T>& r : group.rows) {
+        b[row++] = -(r.linear1.dot(body1.LinearVelocity()) + r.angular1.dot(body1.AngularVelocity()) +
+                     r.linear2.dot(body2.LinearVelocity()) + r.angular2.dot(body2.AngularVelocity()));
+      }
     }
     const Vector lambda = g.k.ldlt().solve(b);
-    for (std::size_t k = 0; k < joints_.size(); ++k) impulses_[k] = lambda.template segment<3>(3 * k);
+    row = 0;
+    for (std::size_t k = 0; k < g.groups.size(); ++k) {
+      if (g.groups[k].point) impulses_[k] = lambda.template segment<3>(row);
+      row += g.groups[k].rows.size();
+    }
     const Vector impulse = g.j.transpose() * lambda;
     for (std::size_t body = 0; body < bodies_.size(); ++body) {
       if (column_[body] == kNotUnknown) continue;
@@ -77,14 +84,17 @@ class ExactJointSolve {
   int SolvePosition(int passes, T tolerance) {
     int pass = 0;
     for (; pass < passes; ++pass) {
-      const Geometry g = Assemble(T(0));
-      Vector c(3 * joints_.size());
+      const Geometry g = Assemble(rows_(), T(0));
+      Vector c(g.j.rows());
       bool converged = true;
-      for (std::size_t k = 0; k < joints_.size(); ++k) {
-        const Vec3<T> separation = bodies_[joints_[k]->body2()].position + g.r2[k] -
-                                   bodies_[joints_[k]->body1()].position - g.r1[k];
-        c.template segment<3>(3 * k) = separation;
-        if (!(separation.squaredNorm() <= tolerance * tolerance)) converged = false;
+      std::size_t row = 0;
+      for (const ExactRowGroup<T>& group : g.groups) {
+        T squared = T(0);
+        for (const ExactRow<T>& r : group.rows) {
+          c[row++] = r.error;
+          squared += r.error * r.error;
+        }
+        if (!(squared <= tolerance * tolerance)) converged = false;
       }
       if (converged) break;
       const Vector lambda = g.k.ldlt().solve(-c);
@@ -105,17 +115,15 @@ class ExactJointSolve {
   static constexpr std::size_t kNotUnknown = static_cast<std::size_t>(-1);
 
   struct Geometry {
-    std::vector<Vec3<T>> r1, r2;
+    std::vector<ExactRowGroup<T>> groups;
     std::vector<Mat33<T>> inverse_inertia;  // per body (dynamic ones), with G
     Matrix j, k;
   };
 
-  Geometry Assemble(T stiffness) const {
+  Geometry Assemble(std::vector<ExactRowGroup<T>> groups, T stiffness) const {
     Geometry g;
-    for (std::size_t k = 0; k < joints_.size(); ++k) {
-      g.r1.push_back(bodies_[joints_[k]->body1()].rotation * joints_[k]->local_point1());
-      g.r2.push_back(bodies_[joints_[k]->body2()].rotation * joints_[k]->local_point2());
-    }
+    g.groups = std::move(groups);
+    impulses_.resize(g.groups.size(), Vec3<T>::Zero());  // zero before the first solve
     g.inverse_inertia.resize(bodies_.size(), Mat33<T>::Zero());
     std::vector<Mat33<T>> stiffness_of(bodies_.size(), Mat33<T>::Zero());
     const auto pull = [&](std::size_t body, const Vec3<T>& r, T sign, const Vec3<T>& lambda) {
@@ -123,9 +131,11 @@ class ExactJointSolve {
       if (w > T(0)) stiffness_of[body] += w * (Mat33<T>::Identity() - r * r.transpose() / r.squaredNorm());
     };
     if (stiffness > T(0)) {
-      for (std::size_t k = 0; k < joints_.size(); ++k) {
-        if (column_[joints_[k]->body1()] != kNotUnknown) pull(joints_[k]->body1(), g.r1[k], T(-1), impulses_[k]);
-        if (column_[joints_[k]->body2()] != kNotUnknown) pull(joints_[k]->body2(), g.r2[k], T(1), impulses_[k]);
+      for (std::size_t k = 0; k < g.groups.size(); ++k) {
+        const ExactRowGroup<T>& group = g.groups[k];
+        if (!group.point) continue;
+        if (column_[group.body1] != kNotUnknown) pull(group.body1, group.r1, T(-1), impulses_[k]);
+        if (column_[group.body2] != kNotUnknown) pull(group.body2, group.r2, T(1), impulses_[k]);
       }
     }
     for (std::size_t body = 0; body < bodies_.size(); ++body) {
@@ -134,7 +144,8 @@ class ExactJointSolve {
       // (I + G)^-1 = I^-1 (E + G I^-1)^-1: no inverse of I needed.
       g.inverse_inertia[body] = inverse * (Mat33<T>::Identity() + stiffness_of[body] * inverse).inverse();
     }
-    const std::size_t rows = 3 * joints_.size();
+    std::size_t rows = 0;
+    for (const ExactRowGroup<T>& group : g.groups) rows += group.rows.size();
     g.j = Matrix::Zero(rows, 6 * dynamic_);
     Matrix inverse_mass = Matrix::Zero(6 * dynamic_, 6 * dynamic_);
     for (std::size_t body = 0; body < bodies_.size(); ++body) {
@@ -143,29 +154,26 @@ class ExactJointSolve {
       inverse_mass.template block<3, 3>(c, c) = bodies_[body].inv_mass * Mat33<T>::Identity();
       inverse_mass.template block<3, 3>(c + 3, c + 3) = g.inverse_inertia[body];
     }
-    for (std::size_t k = 0; k < joints_.size(); ++k) {
-      const PointConstraint<T>& joint = *joints_[k];
-      if (column_[joint.body1()] != kNotUnknown) {
-        g.j.template block<3, 3>(3 * k, column_[joint.body1()]) = -Mat33<T>::Identity();
-        g.j.template block<3, 3>(3 * k, column_[joint.body1()] + 3) = Cross(g.r1[k]);
-      }
-      if (column_[joint.body2()] != kNotUnknown) {
-        g.j.template block<3, 3>(3 * k, column_[joint.body2()]) = Mat33<T>::Identity();
-        g.j.template block<3, 3>(3 * k, column_[joint.body2()] + 3) = -Cross(g.r2[k]);
+    std::size_t row = 0;
+    for (const ExactRowGroup<T>& group : g.groups) {
+      for (const ExactRow<T>& r : group.rows) {
+        if (column_[group.body1] != kNotUnknown) {
+          g.j.template block<1, 3>(row, column_[group.body1]) = r.linear1.transpose();
+          g.j.template block<1, 3>(row, column_[group.body1] + 3) = r.angular1.transpose();
+        }
+        if (column_[group.body2] != kNotUnknown) {
+          g.j.template block<1, 3>(row, column_[group.body2]) += r.linear2.transpose();
+          g.j.template block<1, 3>(row, column_[group.body2] + 3) += r.angular2.transpose();
+        }
+        ++row;
       }
     }
     g.k = g.j * inverse_mass * g.j.transpose();
     return g;
   }
 
-  static Mat33<T> Cross(const Vec3<T>& r) {
-    Mat33<T> m;
-    m << T(0), -r.z(), r.y(), r.z(), T(0), -r.x(), -r.y(), r.x(), T(0);
-    return m;
-  }
-
   std::vector<Body<T>>& bodies_;
-  std::vector<const PointConstraint<T>*> joints_;
+  Rows rows_;
   std::vector<Vec3<T>>& impulses_;
   T stiffness_;  // geometric stiffness factor x dt
   std::vector<std::size_t> column_;  // first column of each dynamic body in J

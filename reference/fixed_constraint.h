@@ -71,6 +71,8 @@ class FixedConstraint {
   }
 
   const Quat<T>& inv_initial_orientation() const { return inv_initial_orientation_; }
+  const Vec3<T>& local_point1() const { return local_point1_; }
+  const Vec3<T>& local_point2() const { return local_point2_; }
 
  private:
   std::size_t body1_, body2_;

@@ -55,6 +55,8 @@ class GearConstraint {
     return hinge1_ != kNoConstraint && hinge2_ != kNoConstraint;
   }
   T ratio() const { return ratio_; }
+  const Vec3<T>& local_hinge_axis1() const { return local_hinge_axis1_; }
+  const Vec3<T>& local_hinge_axis2() const { return local_hinge_axis2_; }
 
   void SetupVelocityConstraint(const Body<T>& body1, const Body<T>& body2, T /*dt*/) {
     CalculateProperties(body1, body2);

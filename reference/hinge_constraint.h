@@ -196,6 +196,17 @@ class HingeConstraint {
   const PointPart<T>& point_part() const { return point_; }
   const HingeRotationPart<T>& rotation_part() const { return rotation_; }
   bool has_limits() const { return has_limits_; }
+  // The exact solve's view: anchors and axes in body space; whether limits,
+  // motor or friction add inequality rows.
+  const Vec3<T>& local_point1() const { return local_point1_; }
+  const Vec3<T>& local_point2() const { return local_point2_; }
+  const Vec3<T>& local_hinge_axis1() const { return local_hinge_axis1_; }
+  const Vec3<T>& local_hinge_axis2() const { return local_hinge_axis2_; }
+  bool HasInequalityRows() const { return UsesAngle(); }
+  // What a velocity setup does to the turn count (the exact solve has none).
+  void CountTurnsAt(const Body<T>& body1, const Body<T>& body2) {
+    CountTurns(CurrentAngle(body1, body2));
+  }
 
  private:
   struct LambdaRange {

@@ -54,6 +54,8 @@ class RackAndPinionConstraint {
     return hinge_ != kNoConstraint && slider_ != kNoConstraint;
   }
   T ratio() const { return ratio_; }
+  const Vec3<T>& local_hinge_axis1() const { return local_hinge_axis1_; }
+  const Vec3<T>& local_slider_axis2() const { return local_slider_axis2_; }
 
   void SetupVelocityConstraint(const Body<T>& body1, const Body<T>& body2, T /*dt*/) {
     CalculateProperties(body1, body2);

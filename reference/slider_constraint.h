@@ -193,6 +193,12 @@ class SliderConstraint {
   const RotationEulerPart<T>& rotation_part() const { return rotation_; }
   const Quat<T>& inv_initial_orientation() const { return inv_initial_orientation_; }
   bool has_limits() const { return has_limits_; }
+  // The exact solve's view (body space).
+  const Vec3<T>& local_point1() const { return local_point1_; }
+  const Vec3<T>& local_point2() const { return local_point2_; }
+  const Vec3<T>& local_normal1() const { return local_normal1_; }
+  const Vec3<T>& local_normal2() const { return local_normal2_; }
+  bool HasInequalityRows() const { return UsesPosition(); }
 
  private:
   bool UsesPosition() const {

@@ -364,14 +364,32 @@ class World {
         constraint);
   }
 
-  // JointSolver::kExact (reference/exact_solve.h): ball joints only, on
-  // bodies without restricted degrees of freedom (what the batch's plan takes).
+  // JointSolver::kExact (reference/exact_solve.h): the equality rows of
+  // point, hinge, fixed, slider, gear and rack-and-pinion constraints
+  // without limits, motors or friction, on bodies without restricted degrees
+  // of freedom (what the batch's plan takes).
   ExactJointSolve<T> ExactSolve(T stiffness) {
-    std::vector<const PointConstraint<T>*> joints;
     for (std::size_t index = 0; index < constraints_.size(); ++index) {
-      const auto* joint = std::get_if<PointConstraint<T>>(&constraints_[index]);
-      if (joint == nullptr) throw std::invalid_argument(NotA("point (exact solve)", index));
-      joints.push_back(joint);
+      std::visit(
+          [&](const auto& c) {
+            using Type = std::decay_t<decltype(c)>;
+            constexpr bool kTaken =
+                std::is_same_v<Type, PointConstraint<T>> || std::is_same_v<Type, FixedConstraint<T>> ||
+                std::is_same_v<Type, HingeConstraint<T>> || std::is_same_v<Type, SliderConstraint<T>> ||
+                std::is_same_v<Type, GearConstraint<T>> ||
+                std::is_same_v<Type, RackAndPinionConstraint<T>>;
+            if constexpr (!kTaken) {
+              throw std::invalid_argument("reference::World: constraint " + std::to_string(index) +
+                                          " is of a type the exact solve does not take");
+            } else if constexpr (std::is_same_v<Type, HingeConstraint<T>> ||
+                                 std::is_same_v<Type, SliderConstraint<T>>) {
+              if (c.HasInequalityRows()) {
+                throw std::invalid_argument("reference::World: constraint " + std::to_string(index) +
+                                            " has limits, a motor or friction (exact solve)");
+              }
+            }
+          },
+          constraints_[index]);
     }
     for (std::size_t index = 0; index < bodies_.size(); ++index) {
       const Body<T>& body = bodies_[index];
@@ -381,7 +399,44 @@ class World {
                                     " restricts its DOFs (exact solve)");
       }
     }
-    return ExactJointSolve<T>(bodies_, std::move(joints), exact_impulses_, stiffness);
+    return ExactJointSolve<T>(bodies_, [this] { return ExactRowGroups(); }, exact_impulses_,
+                              stiffness);
+  }
+
+  // Every solved constraint's row groups at the current poses, in scene order.
+  std::vector<ExactRowGroup<T>> ExactRowGroups() const {
+    std::vector<ExactRowGroup<T>> groups;
+    for (const Constraint& constraint : constraints_) {
+      if (!IsSolved(constraint)) continue;
+      std::visit(
+          [&](const auto& c) {
+            using Type = std::decay_t<decltype(c)>;
+            if constexpr (std::is_same_v<Type, PointConstraint<T>>) {
+              groups.push_back(PointRows(c.body1(), c.body2(), bodies_, c.local_point1(), c.local_point2()));
+            } else if constexpr (std::is_same_v<Type, HingeConstraint<T>>) {
+              groups.push_back(PointRows(c.body1(), c.body2(), bodies_, c.local_point1(), c.local_point2()));
+              groups.push_back(HingeRotationRows(c, bodies_));
+            } else if constexpr (std::is_same_v<Type, FixedConstraint<T>>) {
+              groups.push_back(PointRows(c.body1(), c.body2(), bodies_, c.local_point1(), c.local_point2()));
+              groups.push_back(RotationRows(c.body1(), c.body2(), bodies_, c.inv_initial_orientation()));
+            } else if constexpr (std::is_same_v<Type, SliderConstraint<T>>) {
+              groups.push_back(SliderAxesRows(c, bodies_));
+              groups.push_back(RotationRows(c.body1(), c.body2(), bodies_, c.inv_initial_orientation()));
+            } else if constexpr (std::is_same_v<Type, GearConstraint<T>>) {
+              const bool measured = c.HasPositionCorrection();
+              groups.push_back(GearRows(c, bodies_,
+                                        measured ? RotationMeasuredByHinge(c.hinge1(), c.body1()) : T(0),
+                                        measured ? RotationMeasuredByHinge(c.hinge2(), c.body2()) : T(0)));
+            } else if constexpr (std::is_same_v<Type, RackAndPinionConstraint<T>>) {
+              const bool measured = c.HasPositionCorrection();
+              groups.push_back(RackAndPinionRows(
+                  c, bodies_, measured ? RotationMeasuredByHinge(c.hinge(), c.body1()) : T(0),
+                  measured ? TranslationMeasuredBySlider(c.slider(), c.body2()) : T(0)));
+            }
+          },
+          constraint);
+    }
+    return groups;
   }
 
   void StepOnce(const StepSettings& settings, T dt, T warm_start_ratio, T stiffness_ratio) {
@@ -390,6 +445,12 @@ class World {
     if (settings.solver == JointSolver::kExact && !constraints_.empty()) {
       ExactJointSolve<T> exact =
           ExactSolve(T(settings.exact_geometric_stiffness) * dt * stiffness_ratio);
+      // The hinges' turn counts, which their velocity setup would update.
+      for (Constraint& constraint : constraints_) {
+        if (auto* hinge = std::get_if<HingeConstraint<T>>(&constraint)) {
+          hinge->CountTurnsAt(bodies_[hinge->body1()], bodies_[hinge->body2()]);
+        }
+      }
       exact.SolveVelocity();
       Integrate(dt);
       exact.SolvePosition(settings.position_iterations, T(settings.exact_tolerance));
@@ -435,7 +496,8 @@ class World {
   std::vector<BodyMotionSettings<T>> motion_;
   std::vector<Constraint> constraints_;
   T previous_step_dt_ = T(0);  // Jolt's mPreviousStepDeltaTime (warm-start ratio)
-  // JointSolver::kExact: each joint's impulse of the last velocity solve. The
+  // JointSolver::kExact: each row group's impulse of the last velocity solve
+  // (kept for point groups). The
   // batch keeps it in the point part's accumulated impulse, which Gauss-Seidel
   // warm-starts from; here the two are apart, so a batch and a reference that
   // switch solvers between steps part ways (the tests never switch).

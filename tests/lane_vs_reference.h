@@ -76,25 +76,31 @@ void SetReferenceState(reference::World<T>& world, const float* lane_bodies) {
   }
 }
 
-// Per-world velocity kicks of up to 0.3 m/s and rad/s on every dynamic body,
-// so that the worlds of a block differ and every per-lane decision (limit
-// sides, slack or taut, deactivations, recomputes where an error is
-// non-zero, Newton steps of the exact solve) is taken differently across the
-// lanes of one vector.
-inline void KickEveryWorldDifferently(Batch& batch) {
+// Calls edit(world, body, its kStateFloatsPerBody floats) for every dynamic
+// body of every world, then sets the edited state.
+template <class Edit>
+void EditEveryDynamicBody(Batch& batch, Edit&& edit) {
   const std::size_t per_world = batch.body_count() * kStateFloatsPerBody;
   std::vector<float> state(batch.world_count() * per_world);
   batch.GetState(state);
   for (std::size_t w = 0; w < batch.world_count(); ++w) {
     for (std::size_t b = 0; b < batch.body_count(); ++b) {
       if (batch.scene().bodies()[b].motion_type != MotionType::kDynamic) continue;
-      float* body = state.data() + w * per_world + b * kStateFloatsPerBody;
-      for (int i = 7; i < 13; ++i) {
-        body[i] += 0.3f * std::sin(float(w * 13 + b * 7 + std::size_t(i)));
-      }
+      edit(w, b, state.data() + w * per_world + b * kStateFloatsPerBody);
     }
   }
   batch.SetState(state);
+}
+
+// Per-world velocity kicks of up to 0.3 m/s and rad/s on every dynamic body,
+// so that the worlds of a block differ and every per-lane decision (limit
+// sides, slack or taut, deactivations, recomputes where an error is
+// non-zero, Newton steps of the exact solve) is taken differently across the
+// lanes of one vector.
+inline void KickEveryWorldDifferently(Batch& batch) {
+  EditEveryDynamicBody(batch, [](std::size_t w, std::size_t b, float* body) {
+    for (int i = 7; i < 13; ++i) body[i] += 0.3f * std::sin(float(w * 13 + b * 7 + std::size_t(i)));
+  });
 }
 
 }  // namespace manyworlds

@@ -505,17 +505,19 @@ def test_fused_drive_targets_give_the_bits_of_the_setters():
         fused.step(target_translations={1: q})
 
 
-def test_exact_solve_closes_chain16_joints_and_refuses_a_slider():
-    # The exact joint solve (docs/stepping.md): chain16's joints within the
-    # tolerance after every step, where Gauss-Seidel leaves centimetres.
+def test_exact_solve_closes_chain16_and_cartpole_joints_and_refuses_a_motor():
+    # The exact joint solve (docs/stepping.md): chain16's and cartpole's
+    # joints within the tolerance after every step, where Gauss-Seidel leaves
+    # centimetres; a hinge motor (an inequality row) is refused by name.
     settings = mw.StepSettings(solver=mw.JointSolver.EXACT, position_iterations=10)
     assert settings.exact_tolerance == pytest.approx(1e-5)
-    chain = mw.Batch(mw.make_scene("chain16"), 4, threads=1)
-    for _ in range(60):
-        chain.step(settings)
-        assert chain.max_constraint_errors().max() <= settings.exact_tolerance + 2e-6
-    cartpole = mw.Batch(mw.make_scene("cartpole"), 4, threads=1)
-    before = cartpole.get_state()
-    with pytest.raises(mw.SceneError, match="rail"):
-        cartpole.step(settings)
-    assert_same_bits(cartpole.get_state(), before)
+    for scene in ("chain16", "cartpole"):
+        batch = mw.Batch(mw.make_scene(scene), 4, threads=1)
+        for _ in range(60):
+            batch.step(settings)
+            assert batch.max_constraint_errors().max() <= settings.exact_tolerance + 2e-6
+    geartrain = mw.Batch(mw.make_scene("geartrain"), 4, threads=1)
+    before = geartrain.get_state()
+    with pytest.raises(mw.SceneError, match="gear1 hinge"):
+        geartrain.step(settings)
+    assert_same_bits(geartrain.get_state(), before)
