@@ -71,12 +71,6 @@ std::string Unavailable(const Scene& scene, const StepPlan& plan) {
              " constraint; the exact solve takes point, hinge, fixed, slider, gear and "
              "rack-and-pinion constraints";
     }
-    // Limits and motors are inequality rows (bounded impulses), which a
-    // linear solve cannot hold to their bounds.
-    if (c.has_limits() || c.has_motor()) {
-      return c.label + " has " + (c.has_limits() ? "limits" : "a motor or friction") +
-             ", inequality rows the exact solve does not take yet (Gauss-Seidel does)";
-    }
   }
   for (std::size_t b = 0; b < plan.bodies.size(); ++b) {
     if (plan.bodies[b].motion == MotionType::kDynamic &&
@@ -128,6 +122,13 @@ ExactSolvePlan PlanExactSolve(const Scene& scene, const StepPlan& plan) {
     }
   }
   const std::size_t group_count = groups.size();
+  for (std::size_t i = 0; i < plan.constraints.size(); ++i) {
+    const ConstraintPlan& c = plan.constraints[i];
+    if (c.has_limits() || c.has_motor()) {  // only hinges and sliders have them here
+      exact.inequality.push_back(i);
+      exact.hard_limits |= c.has_limits() && !c.soft_limits;
+    }
+  }
 
   // The group graph, then symbolic elimination by minimum degree: eliminating
   // a group joins its remaining neighbours into a clique (the fill).

@@ -54,6 +54,13 @@ struct ExactSolvePlan {
   };
   std::vector<Group> order;
 
+  // The hinges and sliders with motors, friction or limits, whose bounded
+  // rows are solved by Gauss-Seidel around the exact solve
+  // (batch/exact_inequality_rows-inl.h), in scene order; whether any of
+  // them has hard limits (position steps).
+  std::vector<std::size_t> inequality;
+  bool hard_limits = false;
+
   // Off-diagonal block `block` couples positions first < second (rows of
   // `first`, columns of `second`).
   struct Block {

@@ -33,6 +33,9 @@
 //   b = -J v, lambda = K^-1 b, applied to both bodies: J v = 0 afterwards.
 //   M's rotational blocks carry the joints' geometric stiffness from the last
 //   substep's impulses (Inertia), taken implicitly.
+// Motors, friction and limits (bounded rows) are solved around this by
+// Gauss-Seidel, K's factors reused (batch/exact_inequality_rows-inl.h).
+//
 // Position phase (replaces the Baumgarte iterations): Newton steps on C = 0
 //   at the current poses (J and K re-assembled there), lambda = K^-1 (-C),
 //   applied as position and rotation steps, in each world until every
@@ -52,6 +55,7 @@
 #include <vector>
 
 #include "batch/constraint_block.h"
+#include "batch/exact_inequality_rows-inl.h"
 #include "batch/exact_plan.h"
 #include "batch/exact_rows-inl.h"
 #include "kernels/lane_math-inl.h"
@@ -526,30 +530,16 @@ void ForEachGroupBodyStep(const StepPlan& plan, std::byte* block, const ExactScr
   });
 }
 
-}  // namespace exact
-
-// Velocity phase: J v = 0 for every group at once (see the header comment),
-// with the geometric stiffness `stiffness` * (pull) (Inertia).
-// The point groups' impulses are kept as their parts' total_lambda (the
-// next substep's pulls).
-// `visit()` is called three times per group (the step's prefetch of the next
-// block, spread thin so that its requests never queue up).
+// rhs = -J v at the current velocities, for every group.
 template <class Visit>
-void ExactSolveVelocity(const StepPlan& plan, std::byte* block, ExactScratch& scratch,
-                        float stiffness, Visit&& visit) {
+void VelocityRhs(const StepPlan& plan, std::byte* block, ExactScratch& scratch, Visit&& visit) {
   const ExactSolvePlan& exact = plan.exact;
-  exact::HingeTurns(plan, block);
-  exact::LeverArms(plan, block);
-  exact::GroupJacobians(plan, block, scratch);
-  exact::Inertia(plan, block, scratch, stiffness);
-  exact::AssembleK(plan, block, scratch);
   for (std::size_t p = 0; p < exact.group_count(); ++p) {
     visit();
-    const ConstraintBlock c = exact::GroupAt(plan, block, p);
-    if (!exact::IsPoint(exact, p)) {
+    const ConstraintBlock c = GroupAt(plan, block, p);
+    if (!IsPoint(exact, p)) {
       const ExactScratch::GroupJacobian& jacobian = scratch.jacobians[p];
       ForEachChunk([&](std::size_t offset) {
-        // b = -J v
         Vec3 b = ZeroVec3();
         for (int side = 0; side < 2; ++side) {
           if ((side == 1 ? c.bodies.motion2 : c.bodies.motion1) == MotionType::kStatic) continue;
@@ -563,14 +553,13 @@ void ExactSolveVelocity(const StepPlan& plan, std::byte* block, ExactScratch& sc
       });
       continue;
     }
-    const PointLanes& part = exact::PointPart(c);
+    const PointLanes& part = PointPart(c);
     ForEachChunk([&](std::size_t offset) {
       // b = -J v = v1 + w1 x r1 ... written as the point part's s.
       Vec3 s = ZeroVec3();
       if (c.bodies.motion1 != MotionType::kStatic) {
         s = Sub(LoadVec3(c.bodies.body1->linear_velocity, offset),
-                       Cross(LoadVec3(part.r1, offset),
-                             LoadVec3(c.bodies.body1->angular_velocity, offset)));
+                Cross(LoadVec3(part.r1, offset), LoadVec3(c.bodies.body1->angular_velocity, offset)));
       }
       if (c.bodies.motion2 != MotionType::kStatic) {
         s = Add(Sub(s, LoadVec3(c.bodies.body2->linear_velocity, offset)),
@@ -579,48 +568,167 @@ void ExactSolveVelocity(const StepPlan& plan, std::byte* block, ExactScratch& sc
       StoreVec3(s, scratch.rhs[p], offset);
     });
   }
-  exact::Factor(exact, scratch, visit);
-  exact::Solve(exact, scratch);
+}
+
+// Applies the impulses Solve left in rhs as velocity steps; the point
+// groups' impulses become (or, `accumulate`, are added to) their parts'
+// total_lambda.
+template <class Visit>
+void ApplyVelocityImpulses(const StepPlan& plan, std::byte* block, const ExactScratch& scratch,
+                           bool accumulate, Visit&& visit) {
+  const ExactSolvePlan& exact = plan.exact;
   for (std::size_t p = 0; p < exact.group_count(); ++p) {
     visit();
-    const ConstraintBlock c = exact::GroupAt(plan, block, p);
-    if (!exact::IsPoint(exact, p)) {
-      exact::ForEachGroupBodyStep(
+    if (!IsPoint(exact, p)) {
+      ForEachGroupBodyStep(
           plan, block, scratch, p,
           [](std::size_t, BodyLanes& body, const Vec3& linear, const Vec3& angular,
              std::size_t offset) { AddVelocityStep(body, linear, angular, offset); });
       continue;
     }
-    PointLanes& part = exact::PointPart(c);
+    const ConstraintBlock c = GroupAt(plan, block, p);
+    PointLanes& part = PointPart(c);
     ForEachChunk([&](std::size_t offset) {
       const Vec3 lambda = LoadVec3(scratch.rhs[p], offset);
-      StoreVec3(lambda, part.persistent.total_lambda, offset);
+      StoreVec3(accumulate ? Add(LoadVec3(part.persistent.total_lambda, offset), lambda) : lambda,
+                part.persistent.total_lambda, offset);
       if (c.bodies.motion1 == MotionType::kDynamic) {
         BodyLanes& body = *c.bodies.body1;
         AddVelocityStep(body, Scale(lambda, hn::Neg(Load(body.inv_mass, offset))),
-                        Neg(exact::AngularStep(scratch.inverse_inertia[c.plan.body1],
-                                               LoadVec3(part.r1, offset), lambda, offset)),
+                        Neg(AngularStep(scratch.inverse_inertia[c.plan.body1],
+                                        LoadVec3(part.r1, offset), lambda, offset)),
                         offset);
       }
       if (c.bodies.motion2 == MotionType::kDynamic) {
         BodyLanes& body = *c.bodies.body2;
         AddVelocityStep(body, Scale(lambda, Load(body.inv_mass, offset)),
-                        exact::AngularStep(scratch.inverse_inertia[c.plan.body2],
-                                           LoadVec3(part.r2, offset), lambda, offset),
+                        AngularStep(scratch.inverse_inertia[c.plan.body2],
+                                    LoadVec3(part.r2, offset), lambda, offset),
                         offset);
       }
     });
   }
 }
 
+// One Newton step of the equality rows in the worlds scratch.moving marks
+// (C's negation in rhs and the other groups' rows from the convergence
+// check).
+template <class Visit>
+void NewtonStep(const StepPlan& plan, std::byte* block, ExactScratch& scratch, Visit&& visit) {
+  const ExactSolvePlan& exact = plan.exact;
+  Inertia(plan, block, scratch, 0.0f);
+  AssembleK(plan, block, scratch);
+  Factor(exact, scratch, visit);
+  Solve(exact, scratch);
+  // One Newton step moves each body once, by the sum of its groups'
+  // steps (as J^T lambda): rotation steps applied group after group would
+  // compose, and a link's two nearly opposite turns would not cancel.
+  for (Vec3Lanes& sum : scratch.translation) {
+    ForEachChunk([&](std::size_t offset) { StoreVec3(ZeroVec3(), sum, offset); });
+  }
+  for (Vec3Lanes& sum : scratch.rotation) {
+    ForEachChunk([&](std::size_t offset) { StoreVec3(ZeroVec3(), sum, offset); });
+  }
+  for (std::size_t p = 0; p < exact.group_count(); ++p) {
+    visit();
+    const ConstraintBlock c = GroupAt(plan, block, p);
+    if (!IsPoint(exact, p)) {
+      ForEachGroupBodyStep(
+          plan, block, scratch, p,
+          [&](std::size_t b, BodyLanes&, const Vec3& linear, const Vec3& angular,
+              std::size_t offset) {
+            StoreVec3(Add(LoadVec3(scratch.translation[b], offset), linear),
+                      scratch.translation[b], offset);
+            StoreVec3(Add(LoadVec3(scratch.rotation[b], offset), angular), scratch.rotation[b],
+                      offset);
+          });
+      continue;
+    }
+    const PointLanes& part = PointPart(c);
+    ForEachChunk([&](std::size_t offset) {
+      const Vec3 lambda = LoadVec3(scratch.rhs[p], offset);
+      if (c.bodies.motion1 == MotionType::kDynamic) {
+        AddBodyStep(*c.bodies.body1, scratch.inverse_inertia[c.plan.body1], Splat(-1.0f),
+                           LoadVec3(part.r1, offset), lambda,
+                           scratch.translation[c.plan.body1], scratch.rotation[c.plan.body1],
+                           offset);
+      }
+      if (c.bodies.motion2 == MotionType::kDynamic) {
+        AddBodyStep(*c.bodies.body2, scratch.inverse_inertia[c.plan.body2], Splat(1.0f),
+                           LoadVec3(part.r2, offset), lambda,
+                           scratch.translation[c.plan.body2], scratch.rotation[c.plan.body2],
+                           offset);
+      }
+    });
+  }
+  for (std::size_t b = 0; b < plan.bodies.size(); ++b) {
+    if (plan.bodies[b].motion != MotionType::kDynamic) continue;
+    BodyLanes& body = BodyAt(plan, block, b);
+    ForEachChunk([&](std::size_t offset) {
+      // Worlds that have converged keep every bit.
+      const LaneMask moving = hn::Ne(Load(scratch.moving, offset), Zero());
+      const Vec3 x = LoadVec3(body.position, offset);
+      const Quat q = LoadQuat(body.rotation, offset);
+      const Vec3 moved = Add(x, LoadVec3(scratch.translation[b], offset));
+      const Quat turned = AddRotationStep(q, LoadVec3(scratch.rotation[b], offset));
+      StoreVec3(Select(moving, moved, x), body.position, offset);
+      StoreQuat(Select(moving, turned, q), body.rotation, offset);
+    });
+  }
+}
+
+}  // namespace exact
+
+// Velocity phase: J v = 0 for every group at once (see the header comment),
+// with the geometric stiffness `stiffness` * (pull) (Inertia). With
+// inequality rows (motors, friction, limits; batch/exact_inequality_rows-inl.h)
+// `iterations` passes of block Gauss-Seidel around the exact solve, which
+// factors K once and ends with the equality rows exact.
+// The point groups' impulses are kept as their parts' total_lambda (the
+// next substep's pulls).
+// `visit()` is called three times per group (the step's prefetch of the next
+// block, spread thin so that its requests never queue up).
+template <class Visit>
+void ExactSolveVelocity(const StepPlan& plan, std::byte* block, ExactScratch& scratch,
+                        float stiffness, const StepScalars& step, int iterations,
+                        Visit&& visit) {
+  const ExactSolvePlan& exact = plan.exact;
+  exact::HingeTurns(plan, block);
+  exact::LeverArms(plan, block);
+  exact::GroupJacobians(plan, block, scratch);
+  exact::Inertia(plan, block, scratch, stiffness);
+  exact::AssembleK(plan, block, scratch);
+  for (std::size_t i : exact.inequality) {
+    exact::InequalitySetupAndWarmStart(ConstraintInBlock(plan, i, block), step);
+  }
+  exact::VelocityRhs(plan, block, scratch, visit);
+  exact::Factor(exact, scratch, visit);
+  exact::Solve(exact, scratch);
+  exact::ApplyVelocityImpulses(plan, block, scratch, false, visit);
+  if (exact.inequality.empty()) return;
+  const auto no_visit = [] {};
+  for (int pass = 1; pass < iterations; ++pass) {
+    for (std::size_t i : exact.inequality) {
+      exact::InequalitySolveVelocity(ConstraintInBlock(plan, i, block));
+    }
+    exact::VelocityRhs(plan, block, scratch, no_visit);
+    exact::Solve(exact, scratch);
+    exact::ApplyVelocityImpulses(plan, block, scratch, true, no_visit);
+  }
+}
+
 // Position phase: Newton steps until each world's groups are within
-// `tolerance`, at most `passes`. Returns the number of steps taken (by the
-// slowest world of the block).
+// `tolerance`, at most `passes`, each followed by a Baumgarte step of every
+// hard limit. Returns the number of passes taken (by the slowest world of the
+// block).
 template <class Visit>
 int ExactSolvePosition(const StepPlan& plan, std::byte* block, ExactScratch& scratch, int passes,
-                       float tolerance, Visit&& visit) {
+                       float tolerance, const StepScalars& step, Visit&& visit) {
   const ExactSolvePlan& exact = plan.exact;
   const LaneVec tolerance_squared = Splat(tolerance * tolerance);
+  // Whether a hard limit moved a world in the last pass (unknown before the
+  // first: batch/exact_inequality_rows-inl.h).
+  bool limits_moved = exact.hard_limits;
   int pass = 0;
   for (; pass < passes; ++pass) {
     // The mass metric (no stiffness); K only once some world has to move.
@@ -651,65 +759,12 @@ int ExactSolvePosition(const StepPlan& plan, std::byte* block, ExactScratch& scr
     ForEachChunk([&](std::size_t offset) {
       any_moving |= AnyLane(hn::Ne(Load(scratch.moving, offset), Zero()));
     });
-    if (!any_moving) break;
-    exact::Inertia(plan, block, scratch, 0.0f);
-    exact::AssembleK(plan, block, scratch);
-    exact::Factor(exact, scratch, visit);
-    exact::Solve(exact, scratch);
-    // One Newton step moves each body once, by the sum of its groups'
-    // steps (as J^T lambda): rotation steps applied group after group would
-    // compose, and a link's two nearly opposite turns would not cancel.
-    for (Vec3Lanes& sum : scratch.translation) {
-      ForEachChunk([&](std::size_t offset) { StoreVec3(ZeroVec3(), sum, offset); });
-    }
-    for (Vec3Lanes& sum : scratch.rotation) {
-      ForEachChunk([&](std::size_t offset) { StoreVec3(ZeroVec3(), sum, offset); });
-    }
-    for (std::size_t p = 0; p < exact.group_count(); ++p) {
-      visit();
-      const ConstraintBlock c = exact::GroupAt(plan, block, p);
-      if (!exact::IsPoint(exact, p)) {
-        exact::ForEachGroupBodyStep(
-            plan, block, scratch, p,
-            [&](std::size_t b, BodyLanes&, const Vec3& linear, const Vec3& angular,
-                std::size_t offset) {
-              StoreVec3(Add(LoadVec3(scratch.translation[b], offset), linear),
-                        scratch.translation[b], offset);
-              StoreVec3(Add(LoadVec3(scratch.rotation[b], offset), angular), scratch.rotation[b],
-                        offset);
-            });
-        continue;
-      }
-      const PointLanes& part = exact::PointPart(c);
-      ForEachChunk([&](std::size_t offset) {
-        const Vec3 lambda = LoadVec3(scratch.rhs[p], offset);
-        if (c.bodies.motion1 == MotionType::kDynamic) {
-          exact::AddBodyStep(*c.bodies.body1, scratch.inverse_inertia[c.plan.body1], Splat(-1.0f),
-                             LoadVec3(part.r1, offset), lambda,
-                             scratch.translation[c.plan.body1], scratch.rotation[c.plan.body1],
-                             offset);
-        }
-        if (c.bodies.motion2 == MotionType::kDynamic) {
-          exact::AddBodyStep(*c.bodies.body2, scratch.inverse_inertia[c.plan.body2], Splat(1.0f),
-                             LoadVec3(part.r2, offset), lambda,
-                             scratch.translation[c.plan.body2], scratch.rotation[c.plan.body2],
-                             offset);
-        }
-      });
-    }
-    for (std::size_t b = 0; b < plan.bodies.size(); ++b) {
-      if (plan.bodies[b].motion != MotionType::kDynamic) continue;
-      BodyLanes& body = BodyAt(plan, block, b);
-      ForEachChunk([&](std::size_t offset) {
-        // Worlds that have converged keep every bit.
-        const LaneMask moving = hn::Ne(Load(scratch.moving, offset), Zero());
-        const Vec3 x = LoadVec3(body.position, offset);
-        const Quat q = LoadQuat(body.rotation, offset);
-        const Vec3 moved = Add(x, LoadVec3(scratch.translation[b], offset));
-        const Quat turned = AddRotationStep(q, LoadVec3(scratch.rotation[b], offset));
-        StoreVec3(Select(moving, moved, x), body.position, offset);
-        StoreQuat(Select(moving, turned, q), body.rotation, offset);
-      });
+    if (!any_moving && !limits_moved) break;
+    if (any_moving) exact::NewtonStep(plan, block, scratch, visit);
+    limits_moved = false;
+    if (!exact.hard_limits) continue;
+    for (std::size_t i : exact.inequality) {
+      limits_moved |= exact::LimitSolvePosition(ConstraintInBlock(plan, i, block), step);
     }
   }
   return pass;

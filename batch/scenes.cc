@@ -19,7 +19,7 @@ constexpr Float3 kX{1, 0, 0}, kY{0, 1, 0}, kZ{0, 0, 1};
 
 // The scene id in a form that can be switched on.
 enum class SceneId { kCartpole, kChain16, kChain16R100, kChain16R1000, kChain64, kRackPinion,
-                     kGearTrain, kRagdoll };
+                     kGearTrain, kRagdoll, kLinkage };
 
 // Each scene with what it is there to test (SceneDescription; docs/scenes.md
 // has the full specification).
@@ -28,7 +28,7 @@ struct SceneEntry {
   SceneId scene;
   std::string_view description;
 };
-constexpr std::array<SceneEntry, 8> kScenes{{
+constexpr std::array<SceneEntry, 9> kScenes{{
     {"cartpole", SceneId::kCartpole,
      "slider and hinge under a random cart force every step (RL control loop)"},
     {"chain16", SceneId::kChain16, "16 ball joints released from horizontal: a long chain"},
@@ -44,6 +44,8 @@ constexpr std::array<SceneEntry, 8> kScenes{{
      "hinge velocity motor driving a second hinge through a gear coupling"},
     {"ragdoll", SceneId::kRagdoll,
      "floating humanoid: swing-twist limits, hinge position motors with random targets"},
+    {"linkage", SceneId::kLinkage,
+     "free closed loop of two hinges and two ball joints with a geared flywheel: loop energy"},
 }};
 
 SceneId ParseId(std::string_view id) {
@@ -197,6 +199,47 @@ Scene GearTrain() {
   return scene;
 }
 
+Scene Linkage() {
+  using namespace reference_scene;
+  // A crank-rocker four-bar (crank 0.3, coupler 0.92, rocker 0.6, ground 1:
+  // Grashof, transmission angle within 49-116 degrees, so its rows never
+  // become dependent) whose coupler is on ball joints: two parallel hinges
+  // and two ball joints close the loop without the redundant rows of four
+  // parallel hinges. A flywheel turns twice as fast as the crank. Released
+  // from rest with the crank horizontal, gravity swings it back and forth.
+  Scene scene;
+  scene.AddBody(StaticWorld());
+  scene.AddBody(Dynamic("crank", 1.0f, {0.001f, 0.008f, 0.008f}, {0.15f, 0, 0}));
+  scene.AddBody(Dynamic("coupler", 1.5f, {0.05f, 0.06f, 0.1f}, {0.65f, 0.3f, 0}));
+  scene.AddBody(Dynamic("rocker", 1.2f, {0.036f, 0.002f, 0.036f}, {1.0f, 0.3f, 0}));
+  scene.AddBody(Dynamic("flywheel", 3.0f, {0.03f, 0.03f, 0.05f}, {-0.5f, 0, 0}));
+  scene.AddConstraint(HingeAboutZ("crank hinge", kWorld, kCrank, {0, 0, 0}));
+  const auto ball = [&](std::string name, std::size_t body1, std::size_t body2, Float3 point) {
+    PointConstraintSettings joint;
+    joint.name = std::move(name);
+    joint.body1 = body1;
+    joint.body2 = body2;
+    joint.space = ConstraintSpace::kWorldSpace;
+    joint.point1 = joint.point2 = point;
+    scene.AddConstraint(joint);
+  };
+  ball("crank-coupler", kCrank, kCoupler, {0.3f, 0, 0});
+  ball("coupler-rocker", kCoupler, kRocker, {1.0f, 0.6f, 0});
+  scene.AddConstraint(HingeAboutZ("rocker hinge", kWorld, kRocker, {1.0f, 0, 0}));
+  scene.AddConstraint(HingeAboutZ("flywheel hinge", kWorld, kFlywheel, {-0.5f, 0, 0}));
+  GearConstraintSettings gear;
+  gear.name = "flywheel gear";
+  gear.body1 = kFlywheel;
+  gear.body2 = kCrank;
+  gear.space = ConstraintSpace::kWorldSpace;
+  gear.hinge_axis1 = gear.hinge_axis2 = kZ;
+  gear.ratio = 2.0f;  // theta_flywheel + 2 theta_crank = 0
+  gear.hinge1 = kFlywheelHinge;
+  gear.hinge2 = kCrankHinge;
+  scene.AddConstraint(gear);
+  return scene;
+}
+
 // A rod-like limb of mass m and length L along Y: inertia m L^2 / 12 across
 // it, a tenth of that along it.
 BodySettings Limb(std::string name, float mass, float length, Float3 position) {
@@ -306,6 +349,7 @@ Scene MakeReferenceScene(std::string_view id) {
     case SceneId::kRackPinion: return RackPinion();
     case SceneId::kGearTrain: return GearTrain();
     case SceneId::kRagdoll: return Ragdoll();
+    case SceneId::kLinkage: return Linkage();
   }
   throw std::logic_error("MakeReferenceScene: unhandled scene id");
 }

@@ -221,7 +221,7 @@ bool StepBlockWith(const StepPlan& plan, std::byte* block, const std::byte* next
     if (exact) {
       ExactSolveVelocity(plan, block, scratch,
                          substep == 0 ? params.exact_first_stiffness : params.exact_stiffness,
-                         [&] { prefetch.Visit(); });
+                         step, params.velocity_iterations, [&] { prefetch.Visit(); });
       clock.Lap(StepPhase::kVelocity);
     } else if (constraint_count != 0) {
       for_each_constraint([&](const ConstraintBlock& c) { SetupConstraint(c, step); });
@@ -250,7 +250,7 @@ bool StepBlockWith(const StepPlan& plan, std::byte* block, const std::byte* next
 
     if (exact) {
       ExactSolvePosition(plan, block, scratch, params.position_iterations,
-                         params.exact_tolerance, [&] { prefetch.Visit(); });
+                         params.exact_tolerance, step, [&] { prefetch.Visit(); });
       clock.Lap(StepPhase::kPosition);
     } else if (constraint_count != 0) {
       for (int iteration = 0; iteration < params.position_iterations; ++iteration) {

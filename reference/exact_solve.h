@@ -18,7 +18,11 @@
 //   position:  up to `passes` times, while some group's |C| > tolerance:
 //              lambda = K^-1 (-C) at the current poses,
 //              x += m^-1 (J^T lambda)_linear,
-//              q <- AddRotationStep(q, I^-1 (J^T lambda)_angular)
+//              q <- AddRotationStep(q, I^-1 (J^T lambda)_angular),
+//              then a Baumgarte step of every hard limit (continuing while
+//              one moved)
+// Motors, friction and limits are the world's (reference/world.h), solved
+// around SolveVelocity as batch/exact_inequality_rows-inl.h says.
 #pragma once
 
 #include <Eigen/Dense>
@@ -52,8 +56,13 @@ class ExactJointSolve {
     }
   }
 
-  void SolveVelocity() {
-    const Geometry g = Assemble(rows_(), stiffness_);
+  // `accumulate`: a later pass of the block Gauss-Seidel around motors and
+  // limits, with the rows, inertias and K of the first (the batch factors K
+  // once per velocity phase); the point groups' impulses are then added to
+  // `impulses` instead of replacing them.
+  void SolveVelocity(bool accumulate = false) {
+    if (!accumulate) velocity_geometry_ = Assemble(rows_(), stiffness_);
+    const Geometry& g = velocity_geometry_;
     // -J v, kinematic bodies' velocities included.
     Vector b = Vector::Zero(g.j.rows());
     std::size_t row = 0;
@@ -68,7 +77,10 @@ class ExactJointSolve {
     const Vector lambda = g.k.ldlt().solve(b);
     row = 0;
     for (std::size_t k = 0; k < g.groups.size(); ++k) {
-      if (g.groups[k].point) impulses_[k] = lambda.template segment<3>(row);
+      if (g.groups[k].point) {
+        const Vec3<T> impulse = lambda.template segment<3>(row);
+        impulses_[k] = accumulate ? Vec3<T>(impulses_[k] + impulse) : impulse;
+      }
       row += g.groups[k].rows.size();
     }
     const Vector impulse = g.j.transpose() * lambda;
@@ -80,8 +92,12 @@ class ExactJointSolve {
     }
   }
 
-  // Returns the number of Newton steps taken.
-  int SolvePosition(int passes, T tolerance) {
+  // Returns the number of passes taken. `limits` takes one Baumgarte step of
+  // every hard limit after each Newton step and says whether any moved
+  // (batch/exact_inequality_rows-inl.h); `has_limits` whether there are any.
+  int SolvePosition(int passes, T tolerance, const std::function<bool()>& limits,
+                    bool has_limits) {
+    bool limits_moved = has_limits;
     int pass = 0;
     for (; pass < passes; ++pass) {
       const Geometry g = Assemble(rows_(), T(0));
@@ -96,17 +112,20 @@ class ExactJointSolve {
         }
         if (!(squared <= tolerance * tolerance)) converged = false;
       }
-      if (converged) break;
-      const Vector lambda = g.k.ldlt().solve(-c);
-      const Vector impulse = g.j.transpose() * lambda;
-      for (std::size_t body = 0; body < bodies_.size(); ++body) {
-        if (column_[body] == kNotUnknown) continue;
-        Body<T>& bd = bodies_[body];
-        const Vec3<T> rotation =
-            g.inverse_inertia[body] * impulse.template segment<3>(column_[body] + 3);
-        bd.AddPositionStep(bd.inv_mass * impulse.template segment<3>(column_[body]));
-        bd.AddRotationStep(rotation);
+      if (converged && !limits_moved) break;
+      if (!converged) {
+        const Vector lambda = g.k.ldlt().solve(-c);
+        const Vector impulse = g.j.transpose() * lambda;
+        for (std::size_t body = 0; body < bodies_.size(); ++body) {
+          if (column_[body] == kNotUnknown) continue;
+          Body<T>& bd = bodies_[body];
+          const Vec3<T> rotation =
+              g.inverse_inertia[body] * impulse.template segment<3>(column_[body] + 3);
+          bd.AddPositionStep(bd.inv_mass * impulse.template segment<3>(column_[body]));
+          bd.AddRotationStep(rotation);
+        }
       }
+      limits_moved = has_limits && limits();
     }
     return pass;
   }
@@ -174,6 +193,7 @@ class ExactJointSolve {
 
   std::vector<Body<T>>& bodies_;
   Rows rows_;
+  Geometry velocity_geometry_;  // of the last SolveVelocity without `accumulate`
   std::vector<Vec3<T>>& impulses_;
   T stiffness_;  // geometric stiffness factor x dt
   std::vector<std::size_t> column_;  // first column of each dynamic body in J

@@ -149,24 +149,10 @@ class HingeConstraint {
 
   // Every part solves every iteration; `|` (not `||`) so none is skipped.
   bool SolveVelocityConstraint(Body<T>& body1, Body<T>& body2, T dt) {
-    bool motor = false;
-    if (motor_.IsActive()) {
-      if (motor_state_ == MotorState::kOff) {
-        // Friction: a zero-velocity row that can apply at most f·dt per step.
-        const T max_lambda = max_friction_torque_ * dt;
-        motor = motor_.SolveVelocityConstraint(body1, body2, a1_, -max_lambda, max_lambda);
-      } else {
-        motor = motor_.SolveVelocityConstraint(body1, body2, a1_, dt * min_motor_torque_,
-                                               dt * max_motor_torque_);
-      }
-    }
+    const bool motor = SolveMotorVelocity(body1, body2, dt);
     const bool point = point_.SolveVelocityConstraint(body1, body2);
     const bool rotation = rotation_.SolveVelocityConstraint(body1, body2);
-    bool limit = false;
-    if (limit_.IsActive()) {
-      const LambdaRange range = LimitLambdaRange();
-      limit = limit_.SolveVelocityConstraint(body1, body2, a1_, range.min, range.max);
-    }
+    const bool limit = SolveLimitVelocity(body1, body2);
     return motor | point | rotation | limit;
   }
 
@@ -178,16 +164,32 @@ class HingeConstraint {
     rotation_.CalculateConstraintProperties(body1, body1.rotation * local_hinge_axis1_, body2,
                                             body2.rotation * local_hinge_axis2_);
     const bool rotation = rotation_.SolvePositionConstraint(body1, body2, baumgarte);
-
-    bool limit = false;
-    if (has_limits_ && hard_limits_) {
-      CalculateAxisAndAngle(body1, CurrentAngle(body1, body2));
-      CalculateLimitProperties(body1, body2, dt);  // may deactivate (Λ = 0), spec 1.3
-      if (limit_.IsActive()) {
-        limit = limit_.SolvePositionConstraint(body1, body2, SmallestAngleToLimit(), baumgarte);
-      }
-    }
+    const bool limit = SolveLimitPosition(body1, body2, dt, baumgarte);
     return point | rotation | limit;
+  }
+
+  // The rows the exact solve leaves to Gauss-Seidel (motor or friction, and
+  // limits; reference/world.h): their setup at the current poses (the turn
+  // count apart, CountTurnsAt), warm start, velocity and position steps.
+  void SetupInequalityRows(const Body<T>& body1, const Body<T>& body2, T dt) {
+    CalculateAxisAndAngle(body1, CurrentAngle(body1, body2));
+    CalculateLimitProperties(body1, body2, dt);
+    CalculateMotorProperties(body1, body2, dt);
+  }
+  void WarmStartInequalityRows(Body<T>& body1, Body<T>& body2, T warm_start_ratio) {
+    motor_.WarmStart(body1, body2, warm_start_ratio);
+    limit_.WarmStart(body1, body2, warm_start_ratio);
+  }
+  bool SolveInequalityVelocity(Body<T>& body1, Body<T>& body2, T dt) {
+    const bool motor = SolveMotorVelocity(body1, body2, dt);
+    return motor | SolveLimitVelocity(body1, body2);
+  }
+  bool SolveLimitPosition(Body<T>& body1, Body<T>& body2, T dt, T baumgarte) {
+    if (!has_limits_ || !hard_limits_) return false;
+    CalculateAxisAndAngle(body1, CurrentAngle(body1, body2));
+    CalculateLimitProperties(body1, body2, dt);  // may deactivate (Λ = 0), spec 1.3
+    if (!limit_.IsActive()) return false;
+    return limit_.SolvePositionConstraint(body1, body2, SmallestAngleToLimit(), baumgarte);
   }
 
   // Read-only views for tests.
@@ -213,6 +215,23 @@ class HingeConstraint {
     T min;
     T max;
   };
+
+  bool SolveMotorVelocity(Body<T>& body1, Body<T>& body2, T dt) {
+    if (!motor_.IsActive()) return false;
+    if (motor_state_ == MotorState::kOff) {
+      // Friction: a zero-velocity row that can apply at most f·dt per step.
+      const T max_lambda = max_friction_torque_ * dt;
+      return motor_.SolveVelocityConstraint(body1, body2, a1_, -max_lambda, max_lambda);
+    }
+    return motor_.SolveVelocityConstraint(body1, body2, a1_, dt * min_motor_torque_,
+                                          dt * max_motor_torque_);
+  }
+
+  bool SolveLimitVelocity(Body<T>& body1, Body<T>& body2) {
+    if (!limit_.IsActive()) return false;
+    const LambdaRange range = LimitLambdaRange();
+    return limit_.SolveVelocityConstraint(body1, body2, a1_, range.min, range.max);
+  }
 
   // A jump of more than pi since the last setup is a wrap through +-pi (the
   // hinge turned less than pi the other way): one turn up or down.

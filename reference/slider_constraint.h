@@ -131,35 +131,29 @@ class SliderConstraint {
 
   // Every part solves every iteration; `|` (not `||`) so none is skipped.
   bool SolveVelocityConstraint(Body<T>& body1, Body<T>& body2, T dt) {
-    bool motor = false;
-    if (motor_.IsActive()) {
-      if (motor_state_ == MotorState::kOff) {
-        // Friction: a zero-velocity row that can apply at most f·dt per step.
-        const T max_lambda = max_friction_force_ * dt;
-        motor = motor_.SolveVelocityConstraint(body1, body2, slider_axis_, -max_lambda,
-                                               max_lambda);
-      } else {
-        motor = motor_.SolveVelocityConstraint(body1, body2, slider_axis_,
-                                               dt * min_motor_force_, dt * max_motor_force_);
-      }
-    }
+    const bool motor = SolveMotorVelocity(body1, body2, dt);
     const bool sideways = dual_axis_.SolveVelocityConstraint(body1, body2, n1_, n2_);
     const bool rotation = rotation_.SolveVelocityConstraint(body1, body2);
-    bool limit = false;
-    if (limit_.IsActive()) {
-      // Range from d of the last setup (the velocity phase does not move bodies).
-      constexpr T kMax = std::numeric_limits<T>::max();
-      T min_lambda = -kMax, max_lambda = kMax;
-      if (limits_min_ != limits_max_) {
-        if (d_ <= limits_min_) {
-          min_lambda = T(0);
-        } else {
-          max_lambda = T(0);
-        }
-      }
-      limit = limit_.SolveVelocityConstraint(body1, body2, slider_axis_, min_lambda, max_lambda);
-    }
+    const bool limit = SolveLimitVelocity(body1, body2);
     return motor | sideways | rotation | limit;
+  }
+
+  // The rows the exact solve leaves to Gauss-Seidel (motor or friction, and
+  // limits; reference/world.h): their setup at the current poses, warm
+  // start, velocity and position steps.
+  void SetupInequalityRows(const Body<T>& body1, const Body<T>& body2, T dt) {
+    CalculateLeverArms(body1, body2);
+    CalculateSlidingAxisAndPosition(body1);
+    CalculateLimitProperties(body1, body2, dt);
+    CalculateMotorProperties(body1, body2, dt);
+  }
+  void WarmStartInequalityRows(Body<T>& body1, Body<T>& body2, T warm_start_ratio) {
+    motor_.WarmStart(body1, body2, slider_axis_, warm_start_ratio);
+    limit_.WarmStart(body1, body2, slider_axis_, warm_start_ratio);
+  }
+  bool SolveInequalityVelocity(Body<T>& body1, Body<T>& body2, T dt) {
+    const bool motor = SolveMotorVelocity(body1, body2, dt);
+    return motor | SolveLimitVelocity(body1, body2);
   }
 
   bool SolvePositionConstraint(Body<T>& body1, Body<T>& body2, T dt, T baumgarte) {
@@ -173,17 +167,18 @@ class SliderConstraint {
     const bool rotation =
         rotation_.SolvePositionConstraint(body1, body2, inv_initial_orientation_, baumgarte);
 
-    bool limit = false;
-    if (has_limits_ && hard_limits_) {
-      CalculateLeverArms(body1, body2);
-      CalculateSlidingAxisAndPosition(body1);
-      CalculateLimitProperties(body1, body2, dt);  // may deactivate (Λ = 0), spec 1.3
-      if (limit_.IsActive()) {
-        const T error = d_ <= limits_min_ ? d_ - limits_min_ : d_ - limits_max_;
-        limit = limit_.SolvePositionConstraint(body1, body2, slider_axis_, error, baumgarte);
-      }
-    }
+    const bool limit = SolveLimitPosition(body1, body2, dt, baumgarte);
     return sideways | rotation | limit;
+  }
+
+  bool SolveLimitPosition(Body<T>& body1, Body<T>& body2, T dt, T baumgarte) {
+    if (!has_limits_ || !hard_limits_) return false;
+    CalculateLeverArms(body1, body2);
+    CalculateSlidingAxisAndPosition(body1);
+    CalculateLimitProperties(body1, body2, dt);  // may deactivate (Λ = 0), spec 1.3
+    if (!limit_.IsActive()) return false;
+    const T error = d_ <= limits_min_ ? d_ - limits_min_ : d_ - limits_max_;
+    return limit_.SolvePositionConstraint(body1, body2, slider_axis_, error, baumgarte);
   }
 
   // Read-only views for tests.
@@ -201,6 +196,32 @@ class SliderConstraint {
   bool HasInequalityRows() const { return UsesPosition(); }
 
  private:
+  bool SolveMotorVelocity(Body<T>& body1, Body<T>& body2, T dt) {
+    if (!motor_.IsActive()) return false;
+    if (motor_state_ == MotorState::kOff) {
+      // Friction: a zero-velocity row that can apply at most f·dt per step.
+      const T max_lambda = max_friction_force_ * dt;
+      return motor_.SolveVelocityConstraint(body1, body2, slider_axis_, -max_lambda, max_lambda);
+    }
+    return motor_.SolveVelocityConstraint(body1, body2, slider_axis_, dt * min_motor_force_,
+                                          dt * max_motor_force_);
+  }
+
+  bool SolveLimitVelocity(Body<T>& body1, Body<T>& body2) {
+    if (!limit_.IsActive()) return false;
+    // Range from d of the last setup (the velocity phase does not move bodies).
+    constexpr T kMax = std::numeric_limits<T>::max();
+    T min_lambda = -kMax, max_lambda = kMax;
+    if (limits_min_ != limits_max_) {
+      if (d_ <= limits_min_) {
+        min_lambda = T(0);
+      } else {
+        max_lambda = T(0);
+      }
+    }
+    return limit_.SolveVelocityConstraint(body1, body2, slider_axis_, min_lambda, max_lambda);
+  }
+
   bool UsesPosition() const {
     return has_limits_ || motor_state_ != MotorState::kOff || max_friction_force_ > T(0);
   }

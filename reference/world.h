@@ -365,9 +365,10 @@ class World {
   }
 
   // JointSolver::kExact (reference/exact_solve.h): the equality rows of
-  // point, hinge, fixed, slider, gear and rack-and-pinion constraints
-  // without limits, motors or friction, on bodies without restricted degrees
-  // of freedom (what the batch's plan takes).
+  // point, hinge, fixed, slider, gear and rack-and-pinion constraints, the
+  // hinges' and sliders' motors, friction and limits by Gauss-Seidel around
+  // them, on bodies without restricted degrees of freedom (what the batch's
+  // plan takes).
   ExactJointSolve<T> ExactSolve(T stiffness) {
     for (std::size_t index = 0; index < constraints_.size(); ++index) {
       std::visit(
@@ -381,12 +382,6 @@ class World {
             if constexpr (!kTaken) {
               throw std::invalid_argument("reference::World: constraint " + std::to_string(index) +
                                           " is of a type the exact solve does not take");
-            } else if constexpr (std::is_same_v<Type, HingeConstraint<T>> ||
-                                 std::is_same_v<Type, SliderConstraint<T>>) {
-              if (c.HasInequalityRows()) {
-                throw std::invalid_argument("reference::World: constraint " + std::to_string(index) +
-                                            " has limits, a motor or friction (exact solve)");
-              }
             }
           },
           constraints_[index]);
@@ -451,9 +446,61 @@ class World {
           hinge->CountTurnsAt(bodies_[hinge->body1()], bodies_[hinge->body2()]);
         }
       }
+      // The hinges' and sliders' motors, friction and limits: block
+      // Gauss-Seidel around the exact solve (batch/exact_inequality_rows-inl.h).
+      std::vector<Constraint*> bounded;
+      for (Constraint& constraint : constraints_) {
+        const bool has = std::visit(
+            [](const auto& c) {
+              using Type = std::decay_t<decltype(c)>;
+              if constexpr (std::is_same_v<Type, HingeConstraint<T>> ||
+                            std::is_same_v<Type, SliderConstraint<T>>) {
+                return c.HasInequalityRows();
+              } else {
+                return false;
+              }
+            },
+            constraint);
+        if (has && IsSolved(constraint)) bounded.push_back(&constraint);
+      }
+      const auto for_each_bounded = [&](auto&& action) {
+        bool any = false;
+        for (Constraint* constraint : bounded) {
+          std::visit(
+              [&](auto& c) {
+                using Type = std::decay_t<decltype(c)>;
+                if constexpr (std::is_same_v<Type, HingeConstraint<T>> ||
+                              std::is_same_v<Type, SliderConstraint<T>>) {
+                  any |= action(c, bodies_[c.body1()], bodies_[c.body2()]);
+                }
+              },
+              *constraint);
+        }
+        return any;
+      };
+      for_each_bounded([&](auto& c, Body<T>& body1, Body<T>& body2) {
+        c.SetupInequalityRows(body1, body2, dt);
+        c.WarmStartInequalityRows(body1, body2, warm_start_ratio);
+        return false;
+      });
       exact.SolveVelocity();
+      if (!bounded.empty()) {
+        for (int pass = 1; pass < settings.velocity_iterations; ++pass) {
+          for_each_bounded([&](auto& c, Body<T>& body1, Body<T>& body2) {
+            return c.SolveInequalityVelocity(body1, body2, dt);
+          });
+          exact.SolveVelocity(true);
+        }
+      }
       Integrate(dt);
-      exact.SolvePosition(settings.position_iterations, T(settings.exact_tolerance));
+      exact.SolvePosition(
+          settings.position_iterations, T(settings.exact_tolerance),
+          [&] {
+            return for_each_bounded([&](auto& c, Body<T>& body1, Body<T>& body2) {
+              return c.SolveLimitPosition(body1, body2, dt, T(settings.baumgarte));
+            });
+          },
+          !bounded.empty());
       return;
     }
 

@@ -60,7 +60,7 @@ constexpr const char* kUsage =
     "      lighter than 1/R of the heaviest body joined to it through dynamic\n"
     "      bodies, LimitMassRange, docs/stability.md; 0 = off, the default).\n"
     "      --solver exact solves all equality rows of a scene at once (ball, hinge,\n"
-    "      fixed, slider, gear, rack and pinion without limits or motors;\n"
+    "      fixed, slider, gear, rack and pinion; motors and limits around it;\n"
     "      docs/stepping.md):\n"
     "      --position-iterations is then the most Newton position steps per substep\n"
     "      (4 hold the chains, 30 chain16-r1000), --exact-tolerance the error\n"

@@ -27,7 +27,7 @@ double MechanicalEnergy(const Scene& scene, std::span<const float> world_state, 
 // dynamics, so its drift measures the solver: no actions, no body damping,
 // no kinematic bodies, no motors or friction (hinge, slider, swing-twist,
 // six-DOF), no springs (their potential energy is not counted). Of the
-// reference scenes: the four chains.
+// reference scenes: the four chains and the linkage.
 bool EnergyIsConserved(const Scene& scene, const SceneActions& actions);
 
 // The gear and rack-and-pinion constraints whose hinges (and slider) the scene

@@ -31,7 +31,7 @@
 namespace manyworlds {
 
 // cartpole, chain16, chain16-r100, chain16-r1000, chain64, rackpinion,
-// geartrain, in that order.
+// geartrain, ragdoll, linkage, in that order.
 std::vector<std::string> ReferenceSceneIds();
 
 // The scene `id` (one of ReferenceSceneIds()). Throws std::invalid_argument
@@ -170,6 +170,10 @@ inline constexpr std::size_t kGear1Hinge = 0, kGear2Hinge = 1, kGear = 2;
 // then per side shoulder, elbow, hip, knee.
 inline constexpr std::size_t kPelvis = 0;
 inline constexpr std::size_t kLeftElbow = 3, kLeftKnee = 5, kRightElbow = 7, kRightKnee = 9;
+// linkage
+inline constexpr std::size_t kCrank = 1, kCoupler = 2, kRocker = 3, kFlywheel = 4;
+inline constexpr std::size_t kCrankHinge = 0, kCrankCoupler = 1, kCouplerRocker = 2,
+                             kRockerHinge = 3, kFlywheelHinge = 4, kFlywheelGear = 5;
 }  // namespace reference_scene
 
 // Body and constraint indices of the stress scenes.

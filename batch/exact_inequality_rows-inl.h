@@ -1,0 +1,118 @@
+// The rows the exact solve leaves to Gauss-Seidel: hinge and slider motors,
+// friction and limits (ExactSolvePlan::inequality). Their impulses are
+// bounded (a motor's force limits, a limit's one-sided push), which a linear
+// solve of K cannot respect, so they are solved as Jolt does, one row at a
+// time with clamping, around the exact solve of the equality rows: block
+// Gauss-Seidel with one block holding every equality row (solved exactly by
+// the factors of K, which do not change within a velocity phase) and one
+// block per inequality row.
+//
+//   velocity:  setup and warm start of the inequality rows, then
+//              E, (I, E) x (velocity_iterations - 1)
+//              with E = the equality rows solved exactly for the current
+//              velocities (J v = 0 after it) and I = every inequality row
+//              once (motor then limit, constraint by constraint); the phase
+//              ends with E, so the equality rows hold exactly. Always all
+//              passes: E is not idempotent in float (a second E changes
+//              rounding bits), so stopping when no lane applied an impulse
+//              would make a world depend on the other worlds of its block.
+//   position:  each Newton step of the equality rows is followed by one
+//              Baumgarte step of every hard limit (as Gauss-Seidel takes);
+//              the block stops when no world's equality rows are beyond the
+//              tolerance and no limit moved any world in the last pass. A
+//              pass then changes nothing (limit steps act only where a limit
+//              is violated, Newton steps only in worlds still beyond the
+//              tolerance), so stopping there gives every world what it would
+//              get alone.
+//
+// The parts and their per-lane decisions are the Gauss-Seidel constraint's
+// own (batch/hinge_constraint-inl.h, batch/slider_constraint-inl.h), so the
+// rows behave as they do there; only their neighbours differ.
+
+#if defined(MANYWORLDS_BATCH_EXACT_INEQUALITY_ROWS_INL_H_) == defined(HWY_TARGET_TOGGLE)
+#ifdef MANYWORLDS_BATCH_EXACT_INEQUALITY_ROWS_INL_H_
+#undef MANYWORLDS_BATCH_EXACT_INEQUALITY_ROWS_INL_H_
+#else
+#define MANYWORLDS_BATCH_EXACT_INEQUALITY_ROWS_INL_H_
+#endif
+
+#include <cstddef>
+
+#include "batch/constraint_block.h"
+#include "batch/hinge_constraint-inl.h"
+#include "batch/slider_constraint-inl.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace manyworlds {
+namespace HWY_NAMESPACE {
+namespace exact {
+
+// Setup at the current poses and warm start (the hinge's angle and axes
+// are those HingeTurns wrote).
+inline void InequalitySetupAndWarmStart(const ConstraintBlock& c, const StepScalars& step) {
+  const float ratio = step.warm_start_ratio;
+  if (c.plan.type == ConstraintType::kHinge) {
+    if (c.plan.has_limits()) HingeLimitProperties(c, step);
+    if (c.plan.has_motor()) HingeMotorProperties(c, step);
+    if (c.plan.has_motor()) AngleWarmStart(c.bodies, c.Motor<AngularMotorLanes>().part, ratio);
+    if (c.plan.has_limits()) AngleWarmStart(c.bodies, c.Limit<AngularLimitLanes>().part, ratio);
+    return;
+  }
+  SliderGeometry(c);
+  if (c.plan.has_limits()) SliderLimitProperties(c, step);
+  if (c.plan.has_motor()) SliderMotorProperties(c, step);
+  if (c.plan.has_motor()) {
+    auto& motor = c.Motor<LinearMotorLanes>();
+    AxisWarmStart(c.bodies, motor.geometry, motor.part, ratio);
+  }
+  if (c.plan.has_limits()) {
+    auto& limit = c.Limit<LinearLimitLanes>();
+    AxisWarmStart(c.bodies, limit.geometry, limit.part, ratio);
+  }
+}
+
+// One velocity step of the motor, then the limit.
+inline void InequalitySolveVelocity(const ConstraintBlock& c) {
+  if (c.plan.type == ConstraintType::kHinge) {
+    if (c.plan.has_motor()) {
+      auto& motor = c.Motor<AngularMotorLanes>();
+      AngleSolveVelocity(c.bodies, motor.geometry, motor.part);
+    }
+    if (c.plan.has_limits()) {
+      auto& limit = c.Limit<AngularLimitLanes>();
+      AngleSolveVelocity(c.bodies, limit.geometry, limit.part);
+    }
+    return;
+  }
+  if (c.plan.has_motor()) {
+    auto& motor = c.Motor<LinearMotorLanes>();
+    AxisSolveVelocity(c.bodies, motor.geometry, motor.part);
+  }
+  if (c.plan.has_limits()) {
+    auto& limit = c.Limit<LinearLimitLanes>();
+    AxisSolveVelocity(c.bodies, limit.geometry, limit.part);
+  }
+}
+
+// One Baumgarte step of a hard limit at the current poses; true if any lane
+// moved.
+inline bool LimitSolvePosition(const ConstraintBlock& c, const StepScalars& step) {
+  if (!c.plan.has_limits() || c.plan.soft_limits) return false;
+  if (c.plan.type == ConstraintType::kHinge) {
+    HingeAxesAndAngle(c, true);
+    HingeLimitProperties(c, step);
+    auto& limit = c.Limit<AngularLimitLanes>();
+    return AngleSolvePosition(c.bodies, limit.geometry, limit.part, step.baumgarte);
+  }
+  SliderGeometry(c);
+  SliderLimitProperties(c, step);
+  auto& limit = c.Limit<LinearLimitLanes>();
+  return AxisSolvePosition(c.bodies, limit.geometry, limit.part, step.baumgarte);
+}
+
+}  // namespace exact
+}  // namespace HWY_NAMESPACE
+}  // namespace manyworlds
+HWY_AFTER_NAMESPACE();
+
+#endif  // MANYWORLDS_BATCH_EXACT_INEQUALITY_ROWS_INL_H_
