@@ -1,5 +1,6 @@
 // The rows the exact solve leaves to Gauss-Seidel: hinge and slider motors,
-// friction and limits (ExactSolvePlan::inequality). Their impulses are
+// friction and limits, swing-twist limits and drives
+// (ExactSolvePlan::inequality). Their impulses are
 // bounded (a motor's force limits, a limit's one-sided push), which a linear
 // solve of K cannot respect, so they are solved as Jolt does, one row at a
 // time with clamping, around the exact solve of the equality rows: block
@@ -26,8 +27,9 @@
 //              get alone.
 //
 // The parts and their per-lane decisions are the Gauss-Seidel constraint's
-// own (batch/hinge_constraint-inl.h, batch/slider_constraint-inl.h), so the
-// rows behave as they do there; only their neighbours differ.
+// own (batch/hinge_constraint-inl.h, batch/slider_constraint-inl.h,
+// batch/swing_twist_constraint-inl.h), so the rows behave as they do there;
+// only their neighbours differ.
 
 #if defined(MANYWORLDS_BATCH_EXACT_INEQUALITY_ROWS_INL_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef MANYWORLDS_BATCH_EXACT_INEQUALITY_ROWS_INL_H_
@@ -41,6 +43,7 @@
 #include "batch/constraint_block.h"
 #include "batch/hinge_constraint-inl.h"
 #include "batch/slider_constraint-inl.h"
+#include "batch/swing_twist_constraint-inl.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace manyworlds {
@@ -48,9 +51,18 @@ namespace HWY_NAMESPACE {
 namespace exact {
 
 // Setup at the current poses and warm start (the hinge's angle and axes
-// are those HingeTurns wrote).
+// are those HingeTurns wrote), drives before limits as Gauss-Seidel.
 inline void InequalitySetupAndWarmStart(const ConstraintBlock& c, const StepScalars& step) {
   const float ratio = step.warm_start_ratio;
+  if (c.plan.type == ConstraintType::kSwingTwist) {
+    auto& s = c.Main<SwingTwistConstraintLanes>();
+    SwingTwistCalculateProperties(c.bodies, c.plan.swing_twist, s.frames, s.limits,
+                                  s.swing_twist);
+    if (c.plan.has_rotation_drives()) RotationDriveProperties(c, s.frames, s.limits, step);
+    if (c.plan.has_rotation_drives()) RotationDriveWarmStart(c, ratio);
+    SwingTwistWarmStart(c.bodies, c.plan.swing_twist, s.swing_twist, ratio);
+    return;
+  }
   if (c.plan.type == ConstraintType::kHinge) {
     if (c.plan.has_limits()) HingeLimitProperties(c, step);
     if (c.plan.has_motor()) HingeMotorProperties(c, step);
@@ -71,8 +83,14 @@ inline void InequalitySetupAndWarmStart(const ConstraintBlock& c, const StepScal
   }
 }
 
-// One velocity step of the motor, then the limit.
+// One velocity step of the motor (drives), then the limits.
 inline void InequalitySolveVelocity(const ConstraintBlock& c) {
+  if (c.plan.type == ConstraintType::kSwingTwist) {
+    if (c.plan.has_rotation_drives()) RotationDriveSolveVelocity(c);
+    SwingTwistSolveVelocity(c.bodies, c.plan.swing_twist,
+                            c.Main<SwingTwistConstraintLanes>().swing_twist);
+    return;
+  }
   if (c.plan.type == ConstraintType::kHinge) {
     if (c.plan.has_motor()) {
       auto& motor = c.Motor<AngularMotorLanes>();
@@ -97,6 +115,11 @@ inline void InequalitySolveVelocity(const ConstraintBlock& c) {
 // One Baumgarte step of a hard limit at the current poses; true if any lane
 // moved.
 inline bool LimitSolvePosition(const ConstraintBlock& c, const StepScalars& step) {
+  if (c.plan.type == ConstraintType::kSwingTwist) {
+    auto& s = c.Main<SwingTwistConstraintLanes>();
+    return SwingTwistSolvePosition(c.bodies, c.plan.swing_twist, s.frames, s.limits,
+                                   step.baumgarte);
+  }
   if (!c.plan.has_limits() || c.plan.soft_limits) return false;
   if (c.plan.type == ConstraintType::kHinge) {
     HingeAxesAndAngle(c, true);

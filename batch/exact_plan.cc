@@ -56,6 +56,7 @@ std::vector<ExactRows> GroupsOf(ConstraintType type) {
     case ConstraintType::kSlider: return {ExactRows::kSliderAxes, ExactRows::kRotation};
     case ConstraintType::kGear: return {ExactRows::kGear};
     case ConstraintType::kRackAndPinion: return {ExactRows::kRackAndPinion};
+    case ConstraintType::kSwingTwist: return {ExactRows::kPoint};  // limits and drives bounded
     default: return {};
   }
 }
@@ -68,8 +69,8 @@ std::string Unavailable(const Scene& scene, const StepPlan& plan) {
     const ConstraintPlan& c = plan.constraints[i];
     if (GroupsOf(c.type).empty()) {
       return c.label + " is a " + ConstraintTypeName(c.type) +
-             " constraint; the exact solve takes point, hinge, fixed, slider, gear and "
-             "rack-and-pinion constraints";
+             " constraint; the exact solve takes point, hinge, fixed, slider, gear, "
+             "rack-and-pinion and swing-twist constraints";
     }
   }
   for (std::size_t b = 0; b < plan.bodies.size(); ++b) {
@@ -124,7 +125,10 @@ ExactSolvePlan PlanExactSolve(const Scene& scene, const StepPlan& plan) {
   const std::size_t group_count = groups.size();
   for (std::size_t i = 0; i < plan.constraints.size(); ++i) {
     const ConstraintPlan& c = plan.constraints[i];
-    if (c.has_limits() || c.has_motor()) {  // only hinges and sliders have them here
+    if (c.type == ConstraintType::kSwingTwist) {  // its limits always take position steps
+      exact.inequality.push_back(i);
+      exact.hard_limits = true;
+    } else if (c.has_limits() || c.has_motor()) {  // only hinges and sliders have them here
       exact.inequality.push_back(i);
       exact.hard_limits |= c.has_limits() && !c.soft_limits;
     }

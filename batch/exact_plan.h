@@ -31,7 +31,7 @@ struct StepPlan;
 
 // The kinds of row group (batch/exact_rows-inl.h has each one's J and C).
 enum class ExactRows : std::uint8_t {
-  kPoint,          // 3 rows: the anchors' separation (ball, hinge, fixed)
+  kPoint,          // 3 rows: the anchors' separation (ball, hinge, fixed, swing-twist)
   kHingeRotation,  // 2 rows: the hinge axes aligned
   kRotation,       // 3 rows: the relative rotation at rest (fixed, slider)
   kSliderAxes,     // 2 rows: body 2's anchor on body 1's slider line
@@ -54,8 +54,9 @@ struct ExactSolvePlan {
   };
   std::vector<Group> order;
 
-  // The hinges and sliders with motors, friction or limits, whose bounded
-  // rows are solved by Gauss-Seidel around the exact solve
+  // The hinges and sliders with motors, friction or limits, and the
+  // swing-twist constraints (limits, drives), whose bounded rows are solved
+  // by Gauss-Seidel around the exact solve
   // (batch/exact_inequality_rows-inl.h), in scene order; whether any of
   // them has hard limits (position steps).
   std::vector<std::size_t> inequality;

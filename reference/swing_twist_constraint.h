@@ -70,6 +70,30 @@ class SwingTwistConstraint {
 
   void SetupVelocityConstraint(const Body<T>& body1, const Body<T>& body2, T dt) {
     point_.CalculateConstraintProperties(body1, local_point1_, body2, local_point2_);
+    SetupInequalityRows(body1, body2, dt);
+  }
+
+  void WarmStartVelocityConstraint(Body<T>& body1, Body<T>& body2, T warm_start_ratio) {
+    WarmStartInequalityRows(body1, body2, warm_start_ratio);
+    point_.WarmStart(body1, body2, warm_start_ratio);
+  }
+
+  bool SolveVelocityConstraint(Body<T>& body1, Body<T>& body2, T dt) {
+    const bool bounded = SolveInequalityVelocity(body1, body2, dt);
+    return point_.SolveVelocityConstraint(body1, body2) || bounded;
+  }
+
+  bool SolvePositionConstraint(Body<T>& body1, Body<T>& body2, T dt, T baumgarte) {
+    const bool limits = SolveLimitPosition(body1, body2, dt, baumgarte);
+    point_.CalculateConstraintProperties(body1, local_point1_, body2, local_point2_);
+    return point_.SolvePositionConstraint(body1, body2, baumgarte) || limits;
+  }
+
+  // The exact solve's view (reference/world.h): the anchors (body space),
+  // and the limits and drives it leaves to Gauss-Seidel.
+  const Vec3<T>& local_point1() const { return local_point1_; }
+  const Vec3<T>& local_point2() const { return local_point2_; }
+  void SetupInequalityRows(const Body<T>& body1, const Body<T>& body2, T dt) {
     const Quat<T> q = Rotation(body1, body2);
     part_.CalculateConstraintProperties(body1, body2, q,
                                         Quat<T>(body1.rotation * constraint_to_body1_));
@@ -79,24 +103,18 @@ class SwingTwistConstraint {
     }
   }
 
-  void WarmStartVelocityConstraint(Body<T>& body1, Body<T>& body2, T warm_start_ratio) {
+  void WarmStartInequalityRows(Body<T>& body1, Body<T>& body2, T warm_start_ratio) {
     if (drive_.InUse()) drive_.WarmStart(body1, body2, warm_start_ratio);
     part_.WarmStart(body1, body2, warm_start_ratio);
-    point_.WarmStart(body1, body2, warm_start_ratio);
   }
-
-  bool SolveVelocityConstraint(Body<T>& body1, Body<T>& body2, T dt) {
+  bool SolveInequalityVelocity(Body<T>& body1, Body<T>& body2, T dt) {
     const bool drives = drive_.InUse() && drive_.SolveVelocityConstraint(body1, body2, dt);
     const bool limits = part_.SolveVelocityConstraint(body1, body2);
-    return point_.SolveVelocityConstraint(body1, body2) || limits || drives;
+    return limits || drives;
   }
-
-  bool SolvePositionConstraint(Body<T>& body1, Body<T>& body2, T /*dt*/, T baumgarte) {
-    const bool limits = part_.SolvePositionConstraint(
-        body1, body2, Rotation(body1, body2), constraint_to_body1_, constraint_to_body2_,
-        baumgarte);
-    point_.CalculateConstraintProperties(body1, local_point1_, body2, local_point2_);
-    return point_.SolvePositionConstraint(body1, body2, baumgarte) || limits;
+  bool SolveLimitPosition(Body<T>& body1, Body<T>& body2, T /*dt*/, T baumgarte) {
+    return part_.SolvePositionConstraint(body1, body2, Rotation(body1, body2),
+                                         constraint_to_body1_, constraint_to_body2_, baumgarte);
   }
 
  private:

@@ -365,9 +365,9 @@ class World {
   }
 
   // JointSolver::kExact (reference/exact_solve.h): the equality rows of
-  // point, hinge, fixed, slider, gear and rack-and-pinion constraints, the
-  // hinges' and sliders' motors, friction and limits by Gauss-Seidel around
-  // them, on bodies without restricted degrees of freedom (what the batch's
+  // point, hinge, fixed, slider, gear, rack-and-pinion and swing-twist
+  // constraints, the hinges' and sliders' motors, friction and limits and the
+  // swing-twist limits and drives by Gauss-Seidel around them, on bodies without restricted degrees of freedom (what the batch's
   // plan takes).
   ExactJointSolve<T> ExactSolve(T stiffness) {
     for (std::size_t index = 0; index < constraints_.size(); ++index) {
@@ -378,7 +378,8 @@ class World {
                 std::is_same_v<Type, PointConstraint<T>> || std::is_same_v<Type, FixedConstraint<T>> ||
                 std::is_same_v<Type, HingeConstraint<T>> || std::is_same_v<Type, SliderConstraint<T>> ||
                 std::is_same_v<Type, GearConstraint<T>> ||
-                std::is_same_v<Type, RackAndPinionConstraint<T>>;
+                std::is_same_v<Type, RackAndPinionConstraint<T>> ||
+                std::is_same_v<Type, SwingTwistConstraint<T>>;
             if constexpr (!kTaken) {
               throw std::invalid_argument("reference::World: constraint " + std::to_string(index) +
                                           " is of a type the exact solve does not take");
@@ -406,7 +407,8 @@ class World {
       std::visit(
           [&](const auto& c) {
             using Type = std::decay_t<decltype(c)>;
-            if constexpr (std::is_same_v<Type, PointConstraint<T>>) {
+            if constexpr (std::is_same_v<Type, PointConstraint<T>> ||
+                          std::is_same_v<Type, SwingTwistConstraint<T>>) {
               groups.push_back(PointRows(c.body1(), c.body2(), bodies_, c.local_point1(), c.local_point2()));
             } else if constexpr (std::is_same_v<Type, HingeConstraint<T>>) {
               groups.push_back(PointRows(c.body1(), c.body2(), bodies_, c.local_point1(), c.local_point2()));
@@ -456,6 +458,8 @@ class World {
               if constexpr (std::is_same_v<Type, HingeConstraint<T>> ||
                             std::is_same_v<Type, SliderConstraint<T>>) {
                 return c.HasInequalityRows();
+              } else if constexpr (std::is_same_v<Type, SwingTwistConstraint<T>>) {
+                return true;  // its limits (and drives)
               } else {
                 return false;
               }
@@ -470,7 +474,8 @@ class World {
               [&](auto& c) {
                 using Type = std::decay_t<decltype(c)>;
                 if constexpr (std::is_same_v<Type, HingeConstraint<T>> ||
-                              std::is_same_v<Type, SliderConstraint<T>>) {
+                              std::is_same_v<Type, SliderConstraint<T>> ||
+                              std::is_same_v<Type, SwingTwistConstraint<T>>) {
                   any |= action(c, bodies_[c.body1()], bodies_[c.body2()]);
                 }
               },

@@ -173,7 +173,7 @@ SweepConfig ConfigOf(int argc, char** argv) {
       const StepPlan plan = CompilePlan(MakeScene(id));
       if (!plan.exact.available()) {
         throw UsageError("--solver exact: scene '" + id + "' cannot be solved exactly (" +
-                         plan.exact.unavailable + "); pass --scenes without swing-twist joints");
+                         plan.exact.unavailable + "); pass --scenes with reference scenes");
       }
     }
   } else if (solver != "gauss-seidel") {

@@ -505,10 +505,10 @@ def test_fused_drive_targets_give_the_bits_of_the_setters():
         fused.step(target_translations={1: q})
 
 
-def test_exact_solve_closes_chain16_and_cartpole_joints_and_refuses_swing_twist():
+def test_exact_solve_closes_chain16_and_cartpole_joints_and_refuses_a_cone():
     # The exact joint solve (docs/stepping.md): chain16's and cartpole's
     # joints within the tolerance after every step, where Gauss-Seidel leaves
-    # centimetres; a swing-twist constraint (not taken) is refused by name.
+    # centimetres; a cone constraint (not taken) is refused by name.
     settings = mw.StepSettings(solver=mw.JointSolver.EXACT, position_iterations=10)
     assert settings.exact_tolerance == pytest.approx(1e-5)
     for scene in ("chain16", "cartpole"):
@@ -516,8 +516,8 @@ def test_exact_solve_closes_chain16_and_cartpole_joints_and_refuses_swing_twist(
         for _ in range(60):
             batch.step(settings)
             assert batch.max_constraint_errors().max() <= settings.exact_tolerance + 2e-6
-    ragdoll = mw.Batch(mw.make_scene("ragdoll"), 4, threads=1)
-    before = ragdoll.get_state()
-    with pytest.raises(mw.SceneError, match="waist"):
-        ragdoll.step(settings)
-    assert_same_bits(ragdoll.get_state(), before)
+    cone = mw.Batch(mw.make_scene("singular-cone"), 4, threads=1)
+    before = cone.get_state()
+    with pytest.raises(mw.SceneError, match="cone"):
+        cone.step(settings)
+    assert_same_bits(cone.get_state(), before)
