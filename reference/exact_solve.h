@@ -14,7 +14,7 @@
 //              its point groups  stiffness * max(0, s lambda_prev . r) (E - r^ r^T)
 //              (s = -1 on body 1, lambda_prev the group's impulse of the last
 //              velocity solve, kept in `impulses`): the implicit geometric
-//              stiffness of batch/exact_solve-inl.h
+//              stiffness of batch/exact_system-inl.h
 //   position:  up to `passes` times, while some group's |C| > tolerance:
 //              lambda = K^-1 (-C) at the current poses,
 //              x += m^-1 (J^T lambda)_linear,
