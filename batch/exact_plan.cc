@@ -12,18 +12,6 @@
 
 namespace manyworlds {
 
-const char* ExactRowsName(ExactRows rows) {
-  switch (rows) {
-    case ExactRows::kPoint: return "point";
-    case ExactRows::kHingeRotation: return "hinge rotation";
-    case ExactRows::kRotation: return "rotation";
-    case ExactRows::kSliderAxes: return "slider axes";
-    case ExactRows::kGear: return "gear";
-    case ExactRows::kRackAndPinion: return "rack and pinion";
-  }
-  return "?";
-}
-
 int ExactRowCount(ExactRows rows) {
   switch (rows) {
     case ExactRows::kPoint: case ExactRows::kRotation: return 3;

@@ -38,7 +38,6 @@ enum class ExactRows : std::uint8_t {
   kGear,           // 1 row:  theta1 + r theta2 = 0
   kRackAndPinion,  // 1 row:  theta1 - r d2 = 0
 };
-const char* ExactRowsName(ExactRows rows);
 int ExactRowCount(ExactRows rows);
 
 struct ExactSolvePlan {
