@@ -16,6 +16,10 @@
 //   at the current poses (J and K re-assembled there), lambda = K^-1 (-C),
 //   applied as position and rotation steps, in each world until every
 //   group's |C_k| <= tolerance (metres or radians; at most `passes` steps).
+//   A world's step is scaled down whole where it would turn a body by more
+//   than kExactMaxNewtonTurn (a trust region: the rotation rows' J is exact
+//   only near C = 0, and a hinge far from its axis got steps of tens of
+//   radians).
 //   A world that has converged is left exactly as it is while others
 //   continue, so what a world does never depends on the other worlds of its
 //   block.
@@ -233,6 +237,20 @@ void NewtonStep(const StepPlan& plan, std::byte* block, ExactScratch& scratch, V
       }
     });
   }
+  // The trust region (kExactMaxNewtonTurn): in a world where some body
+  // would turn further, every body's step is scaled by the same factor.
+  const LaneVec max_turn = Splat(kExactMaxNewtonTurn);
+  ForEachChunk([&](std::size_t offset) {
+    LaneVec largest_squared = Zero();
+    for (std::size_t b = 0; b < plan.bodies.size(); ++b) {
+      if (plan.bodies[b].motion != MotionType::kDynamic) continue;
+      largest_squared =
+          hn::Max(largest_squared, LengthSquared(LoadVec3(scratch.rotation[b], offset)));
+    }
+    const LaneMask too_far = hn::Gt(largest_squared, hn::Mul(max_turn, max_turn));
+    Store(hn::IfThenElse(too_far, hn::Div(max_turn, hn::Sqrt(largest_squared)), Splat(1.0f)),
+          scratch.step_scale, offset);
+  });
   for (std::size_t b = 0; b < plan.bodies.size(); ++b) {
     if (plan.bodies[b].motion != MotionType::kDynamic) continue;
     BodyLanes& body = BodyAt(plan, block, b);
@@ -241,8 +259,10 @@ void NewtonStep(const StepPlan& plan, std::byte* block, ExactScratch& scratch, V
       const LaneMask moving = hn::Ne(Load(scratch.moving, offset), Zero());
       const Vec3 x = LoadVec3(body.position, offset);
       const Quat q = LoadQuat(body.rotation, offset);
-      const Vec3 moved = Add(x, LoadVec3(scratch.translation[b], offset));
-      const Quat turned = AddRotationStep(q, LoadVec3(scratch.rotation[b], offset));
+      // A scale of 1 gives the unscaled step's bits (x + 1 t = x + t).
+      const LaneVec scale = Load(scratch.step_scale, offset);
+      const Vec3 moved = MulAdd(LoadVec3(scratch.translation[b], offset), scale, x);
+      const Quat turned = AddRotationStep(q, Scale(LoadVec3(scratch.rotation[b], offset), scale));
       StoreVec3(Select(moving, moved, x), body.position, offset);
       StoreQuat(Select(moving, turned, q), body.rotation, offset);
     });

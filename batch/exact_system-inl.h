@@ -66,6 +66,7 @@ struct ExactScratch {
   std::vector<Sym33Lanes> inverse_inertia;        // per dynamic body, this solve's
   std::vector<Sym33Lanes> stiffness;              // per dynamic body: G
   LaneArray moving;                  // position phase: 1 where still correcting
+  LaneArray step_scale;              // position phase: the trust region's factor
 
   void Fit(const StepPlan& step_plan) {
     const ExactSolvePlan& plan = step_plan.exact;

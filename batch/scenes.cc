@@ -333,6 +333,18 @@ float ForceOf(std::uint64_t step_key, std::uint64_t world) {
 
 }  // namespace
 
+Scene MakeChain(std::size_t links, float last_link_scale) {
+  if (links == 0 || links > 4096) {
+    throw std::invalid_argument("MakeChain: links must be 1 to 4096 (got " +
+                                std::to_string(links) + ")");
+  }
+  if (!(std::isfinite(last_link_scale) && last_link_scale > 0.0f)) {
+    throw std::invalid_argument("MakeChain: last_link_scale must be finite and > 0 (got " +
+                                std::to_string(last_link_scale) + ")");
+  }
+  return Chain(links, last_link_scale);
+}
+
 std::vector<std::string> ReferenceSceneIds() {
   std::vector<std::string> ids;
   for (const SceneEntry& entry : kScenes) ids.emplace_back(entry.id);

@@ -73,6 +73,10 @@ void BindSceneCatalogue(py::module_& m) {
   m.def(
       "make_scene", [](const std::string& id) { return MakeScene(id); }, py::arg("id"),
       "The reference or stress scene `id`; ValueError lists the valid ids.");
+  m.def("make_chain", &MakeChain, py::arg("links"), py::arg("last_link_scale"),
+        "chain16's chain at any length and mass ratio: `links` ball-jointed rods 0.5 m long "
+        "released from horizontal, the last one's mass and inertia times `last_link_scale` "
+        "(make_chain(16, 100) is chain16-r100); ValueError names a bad argument.");
   m.def(
       "scene_step_settings", [](const std::string& id) { return SceneStepSettings(id); },
       py::arg("id"), "The StepSettings scene `id` is meant to be stepped with.");

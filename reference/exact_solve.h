@@ -17,8 +17,9 @@
 //              stiffness of batch/exact_system-inl.h
 //   position:  up to `passes` times, while some group's |C| > tolerance:
 //              lambda = K^-1 (-C) at the current poses,
-//              x += m^-1 (J^T lambda)_linear,
-//              q <- AddRotationStep(q, I^-1 (J^T lambda)_angular),
+//              x += s m^-1 (J^T lambda)_linear,
+//              q <- AddRotationStep(q, s I^-1 (J^T lambda)_angular),
+//              s = min(1, kExactMaxNewtonTurn / the largest |rotation step|)
 //              then a Baumgarte step of every hard limit (continuing while
 //              one moved)
 // Motors, friction and limits are the world's (reference/world.h), solved
@@ -32,6 +33,7 @@
 #include <functional>
 #include <vector>
 
+#include "manyworlds/batch.h"
 #include "reference/body.h"
 #include "reference/exact_rows.h"
 #include "reference/math.h"
@@ -116,13 +118,22 @@ class ExactJointSolve {
       if (!converged) {
         const Vector lambda = g.k.ldlt().solve(-c);
         const Vector impulse = g.j.transpose() * lambda;
+        // The trust region: no body turns more than kExactMaxNewtonTurn, the
+        // whole step scaled by one factor.
+        std::vector<Vec3<T>> rotations(bodies_.size(), Vec3<T>::Zero());
+        T largest = T(0);
+        for (std::size_t body = 0; body < bodies_.size(); ++body) {
+          if (column_[body] == kNotUnknown) continue;
+          rotations[body] = g.inverse_inertia[body] * impulse.template segment<3>(column_[body] + 3);
+          largest = std::max(largest, rotations[body].norm());
+        }
+        const T max_turn = T(kExactMaxNewtonTurn);
+        const T scale = largest > max_turn ? max_turn / largest : T(1);
         for (std::size_t body = 0; body < bodies_.size(); ++body) {
           if (column_[body] == kNotUnknown) continue;
           Body<T>& bd = bodies_[body];
-          const Vec3<T> rotation =
-              g.inverse_inertia[body] * impulse.template segment<3>(column_[body] + 3);
-          bd.AddPositionStep(bd.inv_mass * impulse.template segment<3>(column_[body]));
-          bd.AddRotationStep(rotation);
+          bd.AddPositionStep(scale * bd.inv_mass * impulse.template segment<3>(column_[body]));
+          bd.AddRotationStep(scale * rotations[body]);
         }
       }
       limits_moved = has_limits && limits();

@@ -207,7 +207,7 @@ Scene ExactScene(const std::string& id) {
   if (id == "carried") return Carried();
   if (id == "geared") return Geared();
   if (id == "limited") return Limited();
-  return MakeReferenceScene(id);
+  return MakeScene(id);  // a reference or stress scene
 }
 
 // Moves every dynamic body of every world off its joints by a different
@@ -237,9 +237,13 @@ void DisplaceEveryWorldDifferently(Batch& batch) {
   });
 }
 
+// The singular starts too: world 0 (not kicked) of singular-swingtwist starts
+// exactly at a swing of pi, where the swing axis is undefined and rounding
+// picks it (the batch and the reference picked axes 0.8 rad apart in the
+// first step); displaced, every world is off the singular pose itself.
 bool StartsDisplaced(const std::string& id) {
   return id == "cartpole" || id == "geared" || id == "linkage" || id == "limited" ||
-         id == "geartrain" || id == "rackpinion";
+         id == "geartrain" || id == "rackpinion" || id.rfind("singular-", 0) == 0;
 }
 
 StepSettings ExactSettings() {
@@ -363,8 +367,14 @@ std::vector<std::tuple<std::string, std::int64_t>> Cases(bool with_limits) {
   std::vector<std::tuple<std::string, std::int64_t>> cases;
   for (const char* id :
        {"chain16", "chain16-r100", "star", "ring", "carried", "cartpole", "geared", "linkage",
-        "geartrain", "rackpinion", "limited", "ragdoll"}) {
-    if (!with_limits && (std::string(id) == "limited" || std::string(id) == "ragdoll")) continue;
+        "geartrain", "rackpinion", "limited", "ragdoll", "singular-hinge-90",
+        "singular-hinge-180", "singular-fixed-180", "singular-swingtwist"}) {
+    // The tolerance test holds every step; limits and singular starts (a
+    // second to come back) are in the lane test only.
+    if (!with_limits && (std::string(id) == "limited" || std::string(id) == "ragdoll" ||
+                         std::string(id).rfind("singular-", 0) == 0)) {
+      continue;
+    }
     for (std::int64_t target : SupportedStepTargets()) cases.emplace_back(id, target);
   }
   return cases;
@@ -409,6 +419,36 @@ TEST(ExactSolveStiffnessTest, HoldsTheHeavyChainsAtOneSubstep) {
   EXPECT_LE(worst_gap("chain16-r100", 1.0f, 4), 0.01f);
   EXPECT_GT(worst_gap("chain16-r1000", 1.0f, 10), 1.0f);
   EXPECT_LE(worst_gap("chain16-r1000", 1.0f, 30), 0.01f);
+}
+
+// Joints started far from rest (docs/stability.md's singular starts: a hinge
+// 90 and 180 degrees off its axis, a fixed joint 90 and 180 degrees and a
+// slider 90 degrees from their rest poses, a swing-twist joint at a swing of
+// pi) are back after one second: every equality row within the tolerance.
+// The swing-twist joint's swing limit takes Baumgarte steps, not Newton
+// steps to the tolerance (as in Gauss-Seidel), so its angular error is held
+// to 1e-3 rad (measured: at most 7e-5 after the second). Without the trust
+// region (kExactMaxNewtonTurn) a hinge's Newton step from 90 degrees turned
+// it by tens of radians and the two hinge scenes never came back (1.65 and
+// 3.14 rad after the second; every world failed here).
+TEST(ExactSolveTrustRegionTest, SingularStartsAreBackWithinASecond) {
+  for (const char* id :
+       {"singular-hinge-90", "singular-hinge-180", "singular-fixed-90", "singular-fixed-180",
+        "singular-slider-90", "singular-swingtwist"}) {
+    Batch batch(MakeScene(id), kWorlds, BatchOptions{.threads = 1});
+    KickEveryWorldDifferently(batch);
+    StepSettings settings = SceneStepSettings(id);
+    settings.solver = JointSolver::kExact;
+    settings.position_iterations = 10;
+    for (int step = 0; step < 60; ++step) batch.Step(settings);
+    const bool limited = std::string(id) == "singular-swingtwist";
+    for (std::size_t w = 0; w < kWorlds; ++w) {
+      const ConstraintErrorSplit error = batch.MaxConstraintErrorSplit(w);
+      EXPECT_LE(error.linear, settings.exact_tolerance + 2e-6f) << id << " world " << w;
+      EXPECT_LE(error.angular, limited ? 1e-3 : settings.exact_tolerance + 2e-6f)
+          << id << " world " << w;
+    }
+  }
 }
 
 // Steps `batch` with `settings`, expects a SceneError and checks that its

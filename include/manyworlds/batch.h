@@ -78,17 +78,31 @@ enum class JointSolver : std::uint8_t {
   // Jolt's: every constraint's parts in scene order, velocity_iterations
   // then position_iterations Gauss-Seidel sweeps with Baumgarte's factor.
   kGaussSeidel,
-  // For scenes of ball joints (point constraints): each substep solves all
-  // joints' velocity rows at once, exactly (a sparse LDL^T of J M^-1 J^T
-  // whose elimination order and fill the plan fixes), then projects the
+  // Each substep solves all equality rows of a world at once, exactly (a
+  // block-sparse LDL^T of J M^-1 J^T whose elimination order and fill the
+  // plan fixes; ball, hinge, fixed, slider, gear, rack-and-pinion and
+  // swing-twist joints), with motors, friction and limits by block
+  // Gauss-Seidel around it (velocity_iterations passes), then projects the
   // positions back onto the joints by Newton steps of the same system until
   // every joint of the world is within exact_tolerance, at most
-  // position_iterations steps. Scenes with other constraint types, or with
-  // bodies whose degrees of freedom are restricted, or with two ball joints
-  // between the same two bodies, are refused by name.
+  // position_iterations steps, no body turning more than
+  // kExactMaxNewtonTurn in one step. Cone, six-DOF, distance, pulley and
+  // path constraints, bodies whose degrees of freedom are restricted, and
+  // two constraints between the same two bodies are refused by name
+  // (docs/stepping.md).
   kExact,
 };
 const char* JointSolverName(JointSolver solver);  // "gauss_seidel", "exact"
+
+// kExact: the most any body turns in one Newton position step (rad). A step
+// that would turn a body further is scaled down whole, direction kept (a
+// trust region). Newton's linearisation of the rotation rows fails far from
+// C = 0: a hinge started 90 degrees off has a row whose slope is cos 89.4
+// degrees (Jolt's axis repair), and its full step turned the body by
+// tens of radians, so the hinge never came back; capped, it is back within
+// four steps. No reference scene's step comes near the cap (their state
+// digests are unchanged by it).
+inline constexpr float kExactMaxNewtonTurn = 0.5f;
 
 // Jolt's PhysicsSettings that matter to constraint-only worlds (spec 4.2).
 struct StepSettings {

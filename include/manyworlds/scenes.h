@@ -38,6 +38,15 @@ std::vector<std::string> ReferenceSceneIds();
 // naming the unknown id and listing the valid ones.
 Scene MakeReferenceScene(std::string_view id);
 
+// The chains of chain16, chain16-r100, chain16-r1000 and chain64 at any
+// length and mass ratio: `links` rods 0.5 m long (1 kg) along X, released
+// from horizontal, ball-jointed end to end and to the world at the origin,
+// the last link's mass and inertia times `last_link_scale` (chain16-r100 is
+// MakeChain(16, 100)). For mass-ratio studies (docs/accuracy.md). Throws
+// std::invalid_argument naming `links` (0 or over 4096) or
+// `last_link_scale` (not finite and > 0).
+Scene MakeChain(std::size_t links, float last_link_scale);
+
 // The stress scenes of the spec (numerical stability, docs/scenes.md and
 // docs/stability.md): chain16-r1000, chain64, spring-0.1, spring-0.25,
 // spring-0.5, spring-1.0, spin-unstable, flywheel, singular-hinge-90,

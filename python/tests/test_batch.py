@@ -521,3 +521,20 @@ def test_exact_solve_closes_chain16_and_cartpole_joints_and_refuses_a_cone():
     with pytest.raises(mw.SceneError, match="cone"):
         cone.step(settings)
     assert_same_bits(cone.get_state(), before)
+
+
+def test_make_chain_builds_the_chains_at_any_ratio_and_names_a_bad_argument():
+    # make_chain(16, 100) is chain16-r100 body for body; a heavier chain holds
+    # under the exact solve with 30 Newton steps (docs/accuracy.md, mass
+    # ratios); bad arguments are refused by name.
+    assert mw.make_chain(16, 100).bodies == mw.make_scene("chain16-r100").bodies
+    assert mw.make_chain(64, 1).bodies == mw.make_scene("chain64").bodies
+    settings = mw.StepSettings(solver=mw.JointSolver.EXACT, position_iterations=30)
+    batch = mw.Batch(mw.make_chain(16, 1024), 4, threads=1)
+    for _ in range(120):
+        batch.step(settings)
+    assert batch.max_constraint_errors().max() <= 0.01
+    with pytest.raises(ValueError, match="links"):
+        mw.make_chain(0, 1)
+    with pytest.raises(ValueError, match="last_link_scale"):
+        mw.make_chain(16, float("nan"))
