@@ -238,7 +238,9 @@ void NewtonStep(const StepPlan& plan, std::byte* block, ExactScratch& scratch, V
     });
   }
   // The trust region (kExactMaxNewtonTurn): in a world where some body
-  // would turn further, every body's step is scaled by the same factor.
+  // would turn further, every body's step is scaled by the same factor. A
+  // world whose step is NaN keeps scale 1 (the comparison is false): it is
+  // lost either way, and the health check flags it.
   const LaneVec max_turn = Splat(kExactMaxNewtonTurn);
   ForEachChunk([&](std::size_t offset) {
     LaneVec largest_squared = Zero();

@@ -338,8 +338,10 @@ Scene MakeChain(std::size_t links, float last_link_scale) {
     throw std::invalid_argument("MakeChain: links must be 1 to 4096 (got " +
                                 std::to_string(links) + ")");
   }
-  if (!(std::isfinite(last_link_scale) && last_link_scale > 0.0f)) {
-    throw std::invalid_argument("MakeChain: last_link_scale must be finite and > 0 (got " +
+  // The last link's mass (1 kg) and smallest inertia (0.001 kg m^2) times the
+  // scale stay normal floats, far from overflow.
+  if (!(last_link_scale >= 1e-30f && last_link_scale <= 1e30f)) {
+    throw std::invalid_argument("MakeChain: last_link_scale must be in [1e-30, 1e30] (got " +
                                 std::to_string(last_link_scale) + ")");
   }
   return Chain(links, last_link_scale);

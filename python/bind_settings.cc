@@ -109,7 +109,7 @@ void BindEnums(py::module_& m) {
   py::enum_<JointSolver>(m, "JointSolver", "How a step solves the scene's joints.")
       .value("GAUSS_SEIDEL", JointSolver::kGaussSeidel, "Jolt's iterations (the default)")
       .value("EXACT", JointSolver::kExact,
-             "ball-joint scenes: all joints at once, Newton position steps (docs/stepping.md)");
+             "all equality rows at once, Newton position steps (docs/stepping.md)");
   py::enum_<UnhealthyWorlds>(m, "UnhealthyWorlds", "What a step does with the worlds it flags.")
       .value("KEEP", UnhealthyWorlds::kKeep, "leave them flagged until reset")
       .value("RESET", UnhealthyWorlds::kReset, "reset them to the scene's initial state");
@@ -199,7 +199,7 @@ void BindStepAndBatchOptions(py::module_& m) {
       .def_readwrite("solver", &StepSettings::solver,
                      "GAUSS_SEIDEL (Jolt's) or EXACT (position_iterations: most Newton steps)")
       .def_readwrite("exact_tolerance", &StepSettings::exact_tolerance,
-                     "m: EXACT's Newton steps stop at this joint gap")
+                     "m or rad: EXACT's Newton steps stop at this error of every row group")
       .def_readwrite("exact_geometric_stiffness", &StepSettings::exact_geometric_stiffness,
                      "EXACT: implicit geometric stiffness, x the backward-Euler amount (0: off)");
 

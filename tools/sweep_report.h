@@ -58,7 +58,8 @@ struct SweepConfig {
   std::uint64_t seed = 0;
   double mass_range_limit = 0.0;  // LimitMassRange on every scene first; 0: off
   // --solver exact: every setting with JointSolver::kExact (position
-  // iterations are then its Newton steps; velocity iterations do nothing).
+  // iterations are then its Newton steps; velocity iterations its block
+  // Gauss-Seidel passes around bounded rows, nothing without them).
   JointSolver solver = JointSolver::kGaussSeidel;
   std::filesystem::path out;
   std::string command_line;

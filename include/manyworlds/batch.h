@@ -100,7 +100,7 @@ const char* JointSolverName(JointSolver solver);  // "gauss_seidel", "exact"
 // C = 0: a hinge started 90 degrees off has a row whose slope is cos 89.4
 // degrees (Jolt's axis repair), and its full step turned the body by
 // tens of radians, so the hinge never came back; capped, it is back within
-// four steps. No reference scene's step comes near the cap (their state
+// four Newton steps. No reference scene's step comes near the cap (their state
 // digests are unchanged by it).
 inline constexpr float kExactMaxNewtonTurn = 0.5f;
 
@@ -121,8 +121,11 @@ struct StepSettings {
   // intermediate axis never flips (docs/stability.md).
   bool gyroscopic = false;
   JointSolver solver = JointSolver::kGaussSeidel;
-  // kExact: a world's position steps stop once every joint's anchors are
-  // this close (m); velocity_iterations, baumgarte and warm_start are not used.
+  // kExact: a world's Newton position steps stop once every row group's
+  // error is at most this (m for anchors and slider lines, rad for rotations
+  // and couplings); velocity_iterations (the block Gauss-Seidel passes),
+  // baumgarte (the limits' position steps) and warm_start (the bounded rows')
+  // are used only by motors, friction and limits.
   float exact_tolerance = 1e-5f;
   // kExact: how much of the joints' geometric stiffness the velocity solve
   // takes implicitly, as a multiple of the backward-Euler amount (1). It

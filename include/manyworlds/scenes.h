@@ -44,7 +44,7 @@ Scene MakeReferenceScene(std::string_view id);
 // the last link's mass and inertia times `last_link_scale` (chain16-r100 is
 // MakeChain(16, 100)). For mass-ratio studies (docs/accuracy.md). Throws
 // std::invalid_argument naming `links` (0 or over 4096) or
-// `last_link_scale` (not finite and > 0).
+// `last_link_scale` (outside [1e-30, 1e30], NaN).
 Scene MakeChain(std::size_t links, float last_link_scale);
 
 // The stress scenes of the spec (numerical stability, docs/scenes.md and
