@@ -60,7 +60,7 @@ KnobValues ValuesOf(bool small, JointSolver solver) {
   // the block Gauss-Seidel passes around motors, friction and limits (they
   // change nothing in scenes without those, which Sweep skips).
   if (solver == JointSolver::kExact) {
-    if (small) return {{1, 2}, {10}, {2, 4}};
+    if (small) return {{1, 2}, {2, 10}, {2, 4}};
     return {{1, 2, 4, 8}, {1, 2, 4, 10}, {0, 1, 2, 4, 10, 30}};
   }
   if (small) return {{1, 2}, {1, 10}, {0, 2}};

@@ -44,4 +44,18 @@ tail -n +2 "$csv" | awk -F, '
 awk -F, '$1 == "chain16" && $4 == 10 && $5 == 2 { e[$3] = $15 }
   END { if (!(e[2] < 0.75 * e[1])) { print "trajectory RMS at 2 substeps " e[2] " not below 0.75 x " e[1]; exit 1 } }' \
   "$csv" || fail "substeps do not reduce chain16's trajectory error"
-echo "sweep_smoke: $rows rows, header and numbers as expected"
+
+# --solver exact: its own grid, every combination (--small: substeps 1 2,
+# velocity iterations 2 10, Newton steps 2 4). Velocity iterations count only
+# in scenes with motors, friction or limits: rackpinion (a motor) has all 8
+# settings, chain16 only the 4 with the default 10. The exact solve holds
+# chain16's joints where Gauss-Seidel leaves centimetres.
+exact_out=$out/exact
+"$manyworlds" sweep --small --solver exact --scenes rackpinion,chain16 --out "$exact_out"
+exact_csv=$exact_out/sweep.csv
+counts=$(tail -n +2 "$exact_csv" | awk -F, '{ n[$1]++; if ($1 == "chain16" && $4 != 10) bad = 1 }
+  END { print n["rackpinion"] + 0, n["chain16"] + 0, bad + 0 }')
+[ "$counts" = "8 4 0" ] || fail "exact rows (rackpinion, chain16, chain16 with velocity iterations other than 10): $counts, expected 8 4 0"
+awk -F, '$1 == "chain16" && $5 == 4 && $3 == 1 { if (!($11 < 1e-4)) { print "chain16 exact joint error " $11; exit 1 } }' \
+  "$exact_csv" || fail "the exact solve leaves chain16's joints open"
+echo "sweep_smoke: $rows rows, header and numbers as expected; exact grid as expected"
