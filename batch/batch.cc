@@ -157,6 +157,10 @@ void Batch::Impl::Step(const StepSettings& settings, std::stop_token stop, const
   params.exact_first_stiffness =
       previous_substep_dt_ > 0.0f ? params.exact_stiffness * (substep_dt / previous_substep_dt_)
                                   : params.exact_stiffness;
+  params.speculative_contact_distance = settings.speculative_contact_distance;
+  params.penetration_slop = settings.penetration_slop;
+  params.max_penetration_distance = settings.max_penetration_distance;
+  params.min_velocity_for_restitution = settings.min_velocity_for_restitution;
   previous_substep_dt_ = substep_dt;
 
   const std::size_t grain =

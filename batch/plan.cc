@@ -10,6 +10,7 @@
 #include "batch/constraint_lanes.h"
 #include "batch/scene_checks.h"
 #include "kernels/body_lanes.h"
+#include "kernels/contact.h"
 #include "manyworlds/error.h"
 #include "manyworlds/lanes.h"
 
@@ -400,6 +401,16 @@ void CheckStepSettings(const StepSettings& s, const StepPlan& plan) {
     Refuse(what, "exact_geometric_stiffness",
            "must be finite and >= 0 (got " + ValueText(s.exact_geometric_stiffness) + ")");
   }
+  const auto contact_setting = [&](const char* field, float x) {
+    if (!(x >= 0.0f && x <= kMaxContactSetting)) {
+      Refuse(what, field, "must be finite, >= 0 and at most " + ValueText(kMaxContactSetting) +
+                              " (got " + ValueText(x) + ")");
+    }
+  };
+  contact_setting("speculative_contact_distance", s.speculative_contact_distance);
+  contact_setting("penetration_slop", s.penetration_slop);
+  contact_setting("max_penetration_distance", s.max_penetration_distance);
+  contact_setting("min_velocity_for_restitution", s.min_velocity_for_restitution);
   if (s.solver == JointSolver::kExact && !plan.exact.available()) {
     Refuse(what, "solver", std::string("is exact, but ") + plan.exact.unavailable);
   }
@@ -681,8 +692,21 @@ StepPlan CompilePlan(const Scene& scene) {
                  c.body2);
   }
 
+  plan.contacts = FindContactPairs(scene);
+  for (ContactPlan& c : plan.contacts) {
+    c.offset = layout.Add<ContactLanes>();
+    c.points_offset = layout.Add<ContactPointLanes>();
+    for (std::size_t i = 1; i < c.point_count; ++i) layout.Add<ContactPointLanes>();
+    c.motion_offset1 = plan.bodies[c.body1].motion_offset;
+    c.motion_offset2 = plan.bodies[c.body2].motion_offset;
+  }
+
   plan.block_bytes = layout.bytes();
   plan.exact = PlanExactSolve(scene, plan);
+  if (!plan.contacts.empty() && plan.exact.available()) {
+    plan.exact.unavailable = "the scene has contacts (" + plan.contacts.front().label +
+                             "), which only the Gauss-Seidel solver solves";
+  }
   return plan;
 }
 
@@ -702,7 +726,14 @@ std::string DescribePlan(const StepPlan& plan, const StepSettings& settings) {
         << MotionTypeName(c.motion1) << ", " << plan.bodies[c.body2].label << " "
         << MotionTypeName(c.motion2) << "): " << c.PartsInOrder() << "\n";
   }
-  const bool constraints = !plan.constraints.empty();
+  out << "contacts in solve order (after the constraints): " << plan.contacts.size() << "\n";
+  for (const ContactPlan& c : plan.contacts) {
+    out << "  " << c.label << " (" << MotionTypeName(c.motion1) << ", "
+        << MotionTypeName(c.motion2) << "): " << ContactPairKindName(c.kind) << ", up to "
+        << c.point_count << " point(s), friction " << c.friction << ", restitution "
+        << c.restitution << "\n";
+  }
+  const bool constraints = !plan.constraints.empty() || !plan.contacts.empty();
   const int substeps = settings.substeps;
   out << "step: " << substeps << " substep(s) of " << settings.delta_time / substeps
       << " s, each:\n";

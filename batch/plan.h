@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "batch/contact_plan.h"
 #include "batch/exact_plan.h"
 #include "kernels/hermite_path.h"  // HermitePathPoint
 #include "kernels/swing_twist.h"  // SwingTwistConfig
@@ -145,6 +146,7 @@ struct BodyPlan {
 struct StepPlan {
   std::vector<BodyPlan> bodies;
   std::vector<ConstraintPlan> constraints;
+  std::vector<ContactPlan> contacts;  // solved after every constraint
   std::size_t health_offset = 0;  // WorldHealthLanes in the block
   std::size_t block_bytes = 0;  // one block of kLaneWidth worlds
   bool any_dynamic = false;

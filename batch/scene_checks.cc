@@ -124,8 +124,50 @@ void CheckGravityFactor(const std::string& what, float factor) {
   CheckFinite(what, "gravity_factor", factor);
 }
 
+void CheckShape(const BodySettings& body, const std::string& what) {
+  const ShapeSettings& shape = body.shape;
+  CheckEnum(what, "shape.type", shape.type, ShapeType::kPlane, "ShapeType");
+  if (shape.type == ShapeType::kNone) return;
+  const auto size = [&](const char* field, float x) {
+    if (!(Finite(x) && x > 0.0f && x <= kMaxShapeSize)) {
+      Refuse(what, field, "must be finite, positive and at most " + ValueText(kMaxShapeSize) +
+                              " m (got " + ValueText(x) + ")");
+    }
+  };
+  switch (shape.type) {
+    case ShapeType::kSphere: size("shape.radius", shape.radius); break;
+    case ShapeType::kCapsule:
+      size("shape.radius", shape.radius);
+      size("shape.half_height", shape.half_height);
+      break;
+    case ShapeType::kBox:
+      size("shape.half_extents[0]", shape.half_extents[0]);
+      size("shape.half_extents[1]", shape.half_extents[1]);
+      size("shape.half_extents[2]", shape.half_extents[2]);
+      break;
+    case ShapeType::kPlane:
+      if (body.motion_type != MotionType::kStatic) {
+        Refuse(what, "shape.type",
+               "is a plane, which only a static body may have (the body is " +
+                   std::string(MotionTypeName(body.motion_type)) + ")");
+      }
+      break;
+    case ShapeType::kNone: break;
+  }
+  CheckFinite(what, "shape.position", shape.position);
+  CheckOrientation(what, "shape.rotation", shape.rotation);
+  if (!(Finite(shape.friction) && shape.friction >= 0.0f)) {
+    Refuse(what, "shape.friction", "must be finite and >= 0 (got " + ValueText(shape.friction) + ")");
+  }
+  if (!(shape.restitution >= 0.0f && shape.restitution <= 1.0f)) {
+    Refuse(what, "shape.restitution",
+           "must lie in [0, 1] (got " + ValueText(shape.restitution) + ")");
+  }
+}
+
 void CheckBody(const BodySettings& body, const std::string& what) {
   CheckMotionType(what, body.motion_type);
+  CheckShape(body, what);
   CheckFinite(what, "position", body.position);
   CheckFinite(what, "linear_velocity", body.linear_velocity);
   CheckFinite(what, "angular_velocity", body.angular_velocity);

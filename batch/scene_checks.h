@@ -44,6 +44,12 @@ void CheckSwingType(const std::string& what, SwingType type);
 void CheckConstraintSpace(const std::string& what, ConstraintSpace space);
 
 // ---- bodies
+// Shapes are at most this large (m): a plane is unbounded, the others must fit
+// well inside the healthy coordinate range.
+inline constexpr float kMaxShapeSize = 1.0e4f;
+// The contact step settings (distances in m, a speed in m/s) are at most this.
+inline constexpr float kMaxContactSetting = 1.0e4f;
+void CheckShape(const BodySettings& body, const std::string& what);
 void CheckBody(const BodySettings& body, const std::string& what);
 void CheckMassProperties(const std::string& what, float mass, const Float3& inertia_diagonal);
 void CheckDamping(const std::string& what, float linear, float angular);

@@ -14,5 +14,7 @@ namespace manyworlds::scene_ids {
 // What the stress scene `id` tests; "" for an id that is not a stress scene
 // (defined in batch/stress_scenes.cc).
 std::string_view StressSceneDescription(std::string_view id);
+// The same for the contact scenes (defined in batch/contact_scenes.cc).
+std::string_view ContactSceneDescription(std::string_view id);
 
 }  // namespace manyworlds::scene_ids

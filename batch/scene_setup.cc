@@ -15,6 +15,7 @@
 #include "batch/constraint_block.h"
 #include "batch/constraint_lanes.h"
 #include "batch/path_frame.h"
+#include "kernels/contact.h"
 #include "batch/scene_checks.h"
 
 namespace manyworlds {
@@ -499,6 +500,13 @@ void WriteInitialBlock(const Scene& scene, const StepPlan& plan, std::byte* bloc
     const Frames frames(PoseOf(scene.bodies()[c.body1]), PoseOf(scene.bodies()[c.body2]),
                         std::visit([](const auto& s) { return s.space; }, scene.constraints()[i]));
     WriteConstraint(c, scene.constraints()[i], frames, block);
+  }
+  // Contacts start with no manifold and no impulse (zero bytes) and the
+  // pair's combined friction and restitution in every world.
+  for (const ContactPlan& c : plan.contacts) {
+    ContactLanes& lanes = At<ContactLanes>(block, c.offset);
+    Fill(lanes.friction, c.friction);
+    Fill(lanes.restitution, c.restitution);
   }
 }
 

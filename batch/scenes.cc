@@ -11,6 +11,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <variant>
 
 namespace manyworlds {
 namespace {
@@ -377,6 +378,7 @@ std::vector<std::string> AllSceneIds() {
   for (const std::string& id : StressSceneIds()) {
     if (std::find(ids.begin(), ids.end(), id) == ids.end()) ids.push_back(id);
   }
+  for (const std::string& id : ContactSceneIds()) ids.push_back(id);
   return ids;
 }
 
@@ -384,6 +386,7 @@ Scene MakeScene(std::string_view id) {
   for (const std::string& reference : ReferenceSceneIds()) {
     if (reference == id) return MakeReferenceScene(id);
   }
+  if (!scene_ids::ContactSceneDescription(id).empty()) return MakeContactScene(id);
   if (scene_ids::StressSceneDescription(id).empty()) scene_ids::ThrowUnknownScene(id);
   return MakeStressScene(id);
 }
@@ -392,6 +395,8 @@ std::string SceneDescription(std::string_view id) {
   for (const SceneEntry& entry : kScenes) {
     if (entry.id == id) return std::string(entry.description);
   }
+  const std::string_view contact = scene_ids::ContactSceneDescription(id);
+  if (!contact.empty()) return std::string(contact);
   const std::string_view stress = scene_ids::StressSceneDescription(id);
   if (stress.empty()) scene_ids::ThrowUnknownScene(id);
   return std::string(stress);
@@ -405,7 +410,8 @@ void scene_ids::ThrowUnknownScene(std::string_view id) {
   };
   throw std::invalid_argument("unknown scene '" + std::string(id) +
                               "'; valid ids: reference scenes " + list(ReferenceSceneIds()) +
-                              "; stress scenes " + list(StressSceneIds()));
+                              "; stress scenes " + list(StressSceneIds()) +
+                              "; contact scenes " + list(ContactSceneIds()));
 }
 
 SceneActions::SceneActions(std::string_view id) {
@@ -415,6 +421,19 @@ SceneActions::SceneActions(std::string_view id) {
                            std::find(references.begin(), references.end(), id) ==
                                references.end();
   if (stress_only) return;  // no stress scene has an action
+  if (!scene_ids::ContactSceneDescription(id).empty()) {
+    // The walkers: a target anywhere within the limits for every hinge with
+    // a position motor (the ragdoll's actions); the other contact scenes
+    // have none.
+    const Scene scene = MakeContactScene(id);
+    for (std::size_t c = 0; c < scene.constraints().size(); ++c) {
+      const auto* hinge = std::get_if<HingeConstraintSettings>(&scene.constraints()[c]);
+      if (hinge != nullptr && hinge->motor_state == MotorState::kPosition) {
+        targets_.push_back({c, hinge->limits_min, hinge->limits_max});
+      }
+    }
+    return;
+  }
   if (std::find(references.begin(), references.end(), id) == references.end()) {
     scene_ids::ThrowUnknownScene(id);
   }

@@ -3,10 +3,12 @@
 //   for each substep (dt = step dt / substeps):
 //     1. forces, gravity, damping, velocity clamps      (dynamic bodies)
 //     2. setup of every constraint, in scene order      (positions at step start)
+//        then of every contact slot (its points found, docs/contacts.md)
 //     3. warm start: impulses *= dt / dt_prev (first substep, 0 if off; 1 later)
 //     4. velocity iterations, until none of the block's worlds applied an impulse
 //     5. integration                                    (dynamic and kinematic)
 //     6. position iterations, until none moved
+//   Contacts follow the constraints in every phase (Jolt's order).
 //   With JointSolver::kExact, 2-4 are one exact solve of every equality
 //   row's velocity and 6 Newton steps of the same system per world until its
 //   rows are within the tolerance (batch/exact_solve-inl.h).
@@ -34,6 +36,7 @@
 
 #include "batch/cone_constraint-inl.h"
 #include "batch/constraint_block.h"
+#include "batch/contact_constraint-inl.h"
 #include "batch/distance_constraint-inl.h"
 #include "batch/exact_solve-inl.h"
 #include "batch/fixed_constraint-inl.h"
@@ -174,6 +177,8 @@ bool StepBlockWith(const StepPlan& plan, std::byte* block, const std::byte* next
                    const StepParams& params, Clock& clock) {
   clock.Start();
   const std::size_t constraint_count = plan.constraints.size();
+  const std::size_t contact_count = plan.contacts.size();
+  const std::size_t solved_count = constraint_count + contact_count;
   // The exact solve visits each row group three times in its velocity
   // solve and three times per Newton step, whose number is known only as
   // they converge: its prefetch is spread over the velocity solve and the
@@ -181,7 +186,7 @@ bool StepBlockWith(const StepPlan& plan, std::byte* block, const std::byte* next
   const bool exact = params.solver == JointSolver::kExact && constraint_count != 0;
   const std::size_t visits =
       exact ? 6 * plan.exact.group_count()
-            : std::max<std::size_t>(1, constraint_count) *
+            : std::max<std::size_t>(1, solved_count) *
                   static_cast<std::size_t>(2 + params.velocity_iterations +
                                            params.position_iterations);
   NextBlockPrefetch prefetch(next_block, plan.block_bytes, visits);
@@ -193,6 +198,18 @@ bool StepBlockWith(const StepPlan& plan, std::byte* block, const std::byte* next
       prefetch.Visit();
     }
   };
+  const auto for_each_contact = [&](auto&& verb) {
+    for (std::size_t i = 0; i < contact_count; ++i) {
+      verb(ContactInBlock(plan, i, block));
+      prefetch.Visit();
+    }
+  };
+  const ContactStepScalars contact_scalars{
+      ContactScalars{Splat(params.substep_delta_time), Splat(params.min_velocity_for_restitution),
+                     Splat(params.penetration_slop), Splat(params.max_penetration_distance),
+                     Splat(params.baumgarte)},
+      Splat(params.speculative_contact_distance),
+      Vec3{Splat(params.gravity[0]), Splat(params.gravity[1]), Splat(params.gravity[2])}};
   const LaneVec dt = Splat(params.substep_delta_time);
   const Vec3 gravity{Splat(params.gravity[0]), Splat(params.gravity[1]),
                      Splat(params.gravity[2])};
@@ -223,21 +240,24 @@ bool StepBlockWith(const StepPlan& plan, std::byte* block, const std::byte* next
                          substep == 0 ? params.exact_first_stiffness : params.exact_stiffness,
                          step, params.velocity_iterations, [&] { prefetch.Visit(); });
       clock.Lap(StepPhase::kVelocity);
-    } else if (constraint_count != 0) {
+    } else if (solved_count != 0) {
       for_each_constraint([&](const ConstraintBlock& c) { SetupConstraint(c, step); });
+      for_each_contact([&](const ContactBlock& c) { ContactSetup(c, contact_scalars); });
       clock.Lap(StepPhase::kSetup);
       for_each_constraint([&](const ConstraintBlock& c) { WarmStartConstraint(c, step); });
+      for_each_contact([&](const ContactBlock& c) { ContactWarmStart(c, ratio); });
       clock.Lap(StepPhase::kWarmStart);
       for (int iteration = 0; iteration < params.velocity_iterations; ++iteration) {
         bool applied = false;
         for_each_constraint(
             [&](const ConstraintBlock& c) { applied |= SolveConstraintVelocity(c); });
+        for_each_contact([&](const ContactBlock& c) { applied |= ContactSolveVelocity(c); });
         if (!applied) break;
       }
       clock.Lap(StepPhase::kVelocity);
     }
 
-    if (constraint_count == 0) prefetch.Visit();
+    if (solved_count == 0) prefetch.Visit();
     for (const BodyPlan& body : plan.bodies) {
       if (body.motion == MotionType::kStatic) continue;
       const BodyMotionLanes* motion =
@@ -252,11 +272,13 @@ bool StepBlockWith(const StepPlan& plan, std::byte* block, const std::byte* next
       ExactSolvePosition(plan, block, scratch, params.position_iterations,
                          params.exact_tolerance, step, [&] { prefetch.Visit(); });
       clock.Lap(StepPhase::kPosition);
-    } else if (constraint_count != 0) {
+    } else if (solved_count != 0) {
       for (int iteration = 0; iteration < params.position_iterations; ++iteration) {
         bool applied = false;
         for_each_constraint(
             [&](const ConstraintBlock& c) { applied |= SolveConstraintPosition(plan, c, step); });
+        for_each_contact(
+            [&](const ContactBlock& c) { applied |= ContactSolvePosition(c, contact_scalars); });
         if (!applied) break;
       }
       clock.Lap(StepPhase::kPosition);

@@ -28,6 +28,9 @@ struct StepParams {
   // in the first substep: the stiffness comes from the last solve's impulses,
   // which acted over the previous substep (1 where there was none).
   float exact_first_stiffness, exact_stiffness;
+  // Contacts (StepSettings, docs/contacts.md).
+  float speculative_contact_distance, penetration_slop, max_penetration_distance,
+      min_velocity_for_restitution;
 };
 
 struct StepKernels {

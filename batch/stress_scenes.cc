@@ -388,6 +388,7 @@ StepSettings SceneStepSettings(std::string_view id) {
   for (const std::string& reference : ReferenceSceneIds()) {
     if (reference == id) return settings;
   }
+  if (!scene_ids::ContactSceneDescription(id).empty()) return settings;
   scene_ids::ThrowUnknownScene(id);
 }
 

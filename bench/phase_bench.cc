@@ -30,8 +30,15 @@ namespace {
 
 using namespace manyworlds;
 
-struct Options {
+// The reference scenes, then the contact scenes.
+std::vector<std::string> DefaultScenes() {
   std::vector<std::string> scenes = ReferenceSceneIds();
+  for (const std::string& id : ContactSceneIds()) scenes.push_back(id);
+  return scenes;
+}
+
+struct Options {
+  std::vector<std::string> scenes = DefaultScenes();
   std::size_t worlds = 4096;
   int threads = 1;
   int steps = 100, warmup = 20, repeats = 5;

@@ -6,7 +6,7 @@
 //   peak/fma/threads:<T>                  this machine's FMA peak (bench/fma_peak.h),
 //       T in {1, 2}, measured first; peak/fma-after/threads:<T> again at the
 //       end, to show how much the machine's load moved during the run;
-// For every reference scene (docs/scenes.md):
+// For every reference scene and every contact scene (docs/scenes.md):
 //   batch/<scene>/worlds:<N>/threads:<T>  Batch::Step of N worlds on T threads,
 //       N in {8, 64, 256, 1024, 4096, 16384, 65536}, T in {1, 2};
 //   scalar/<scene>/worlds:4096/threads:1  the same batch forced onto Highway's
@@ -81,6 +81,13 @@ constexpr std::size_t kLargeWorlds = 65536;
 constexpr int kDefaultVelocityIterations = 10;  // StepSettings{}
 // The velocity-phase rows step with 1 velocity iteration (the same count as
 // the flops of bench/scene_flops.h) and are differenced with the default 10.
+
+// The reference scenes, then the contact scenes (docs/contacts.md).
+std::vector<std::string> BenchSceneIds() {
+  std::vector<std::string> ids = ReferenceSceneIds();
+  for (const std::string& id : ContactSceneIds()) ids.push_back(id);
+  return ids;
+}
 
 std::string BatchName(const std::string& scene, std::size_t worlds, int threads) {
   return "batch/" + scene + "/worlds:" + std::to_string(worlds) +
@@ -173,7 +180,7 @@ void RunBatchWithFlops(benchmark::State& state, const std::string& name, const s
 
 // The scalar reference, one world after the other, on the same scene and actions.
 void RunReference(benchmark::State& state, const std::string& id) {
-  const Scene scene = MakeReferenceScene(id);
+  const Scene scene = MakeScene(id);
   const SceneActions actions(id);
   const StepSettings settings;
   std::vector<std::unique_ptr<reference::World<float>>> worlds;
@@ -209,7 +216,7 @@ void PrintTable(const RecordingReporter& r) {
   std::printf("%-14s %16s %14s %10s %16s %22s %10s %13s %13s\n", "scene", "batch 1T @4096",
               "reference", "batch/ref", "SCALAR 1T @4096", simd_header, "(CPU time)",
               "2T/1T @4096", "2T/1T @65536");
-  for (const std::string& id : ReferenceSceneIds()) {
+  for (const std::string& id : BenchSceneIds()) {
     const double batch1 = r.WorldStepsPerSecond(BatchName(id, kTableWorlds, 1), kTableWorlds);
     const double batch2 = r.WorldStepsPerSecond(BatchName(id, kTableWorlds, 2), kTableWorlds);
     const double large1 = r.WorldStepsPerSecond(BatchName(id, kLargeWorlds, 1), kLargeWorlds);
@@ -259,7 +266,7 @@ void PrintRoofline(const RecordingReporter& r) {
   std::printf("%-14s %10s %9s %9s %12s %9s %12s %9s %9s %9s %12s %9s %9s %9s %9s %9s\n",
               "scene", "flop/step", "div+sqrt", "transc", "flop/vel2-10", "flop/vit", "step GF/s 1T", "of peak", "(CPU)", "2T",
               "vel GF/s 1T", "of peak", "(CPU)", "2T", "vel SIMD", "(CPU)");
-  for (const std::string& id : ReferenceSceneIds()) {
+  for (const std::string& id : BenchSceneIds()) {
     const double batch1 = r.WorldStepsPerSecond(BatchName(id, kTableWorlds, 1), kTableWorlds);
     if (std::isnan(batch1)) continue;  // filtered out
     const SceneFlops& flops = FlopsOf(id);
@@ -326,7 +333,7 @@ void RegisterPeak(bool after) {
 
 void RegisterAll() {
   RegisterPeak(false);
-  for (const std::string& id : ReferenceSceneIds()) {
+  for (const std::string& id : BenchSceneIds()) {
     // 1 and 2 threads back to back, so that their ratio sees the same load.
     for (const std::size_t worlds : kWorldCounts) {
       for (const int threads : kThreadCounts) {
@@ -337,7 +344,7 @@ void RegisterAll() {
                                      })
             ->UseRealTime();
         if (worlds == kTableWorlds && threads == 1 &&
-            CompilePlan(MakeReferenceScene(id)).exact.available()) {
+            CompilePlan(MakeScene(id)).exact.available()) {
           // The exact joint solve right after Gauss-Seidel (same load), at the
           // settings docs/stepping.md measures: at most 4 Newton steps (30 for
           // chain16-r1000, which comes apart with fewer).

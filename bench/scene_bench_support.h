@@ -65,7 +65,7 @@ inline void RunBatch(benchmark::State& state, const std::string& name, const std
   static Run run;
   if (run.name != name) {
     run = Run{};
-    const Scene scene = MakeReferenceScene(id);
+    const Scene scene = MakeScene(id);
     const double bytes =
         double(Batch(scene, 16, BatchOptions{.threads = 1}).BytesPerWorld()) * double(worlds);
     if (bytes > max_bytes) {

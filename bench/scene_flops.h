@@ -44,7 +44,7 @@ inline SceneFlops CountSceneFlops(const std::string& id, std::uint64_t seed = 1,
   using World = reference::World<Counted<float>>;
   const SceneActions actions(id);
   const StepSettings settings;
-  World world(MakeReferenceScene(id));
+  World world(MakeScene(id));
   std::uint64_t step = 0;
   for (; step < std::uint64_t(kWarmUpSteps); ++step) {
     actions.ApplyTo(world, world_index, step, seed);

@@ -69,7 +69,8 @@ void BindSceneClass(py::module_& m) {
 void BindSceneCatalogue(py::module_& m) {
   m.def("reference_scene_ids", &ReferenceSceneIds, "Ids of the reference scenes.");
   m.def("stress_scene_ids", &StressSceneIds, "Ids of the stress scenes.");
-  m.def("all_scene_ids", &AllSceneIds, "Every scene id, reference then stress.");
+  m.def("contact_scene_ids", &ContactSceneIds, "Ids of the contact scenes (docs/contacts.md).");
+  m.def("all_scene_ids", &AllSceneIds, "Every scene id, reference then stress then contact.");
   m.def(
       "make_scene", [](const std::string& id) { return MakeScene(id); }, py::arg("id"),
       "The reference or stress scene `id`; ValueError lists the valid ids.");

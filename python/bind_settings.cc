@@ -110,6 +110,12 @@ void BindEnums(py::module_& m) {
       .value("GAUSS_SEIDEL", JointSolver::kGaussSeidel, "Jolt's iterations (the default)")
       .value("EXACT", JointSolver::kExact,
              "all equality rows at once, Newton position steps (docs/stepping.md)");
+  py::enum_<ShapeType>(m, "ShapeType", "A body's collision shape (docs/contacts.md).")
+      .value("NONE", ShapeType::kNone, "collides with nothing")
+      .value("SPHERE", ShapeType::kSphere, "radius")
+      .value("CAPSULE", ShapeType::kCapsule, "radius, half_height along the shape's Y")
+      .value("BOX", ShapeType::kBox, "half_extents")
+      .value("PLANE", ShapeType::kPlane, "half-space below the shape's XZ plane; static only");
   py::enum_<UnhealthyWorlds>(m, "UnhealthyWorlds", "What a step does with the worlds it flags.")
       .value("KEEP", UnhealthyWorlds::kKeep, "leave them flagged until reset")
       .value("RESET", UnhealthyWorlds::kReset, "reset them to the scene's initial state");
@@ -151,6 +157,27 @@ void BindSpringAndMotor(py::module_& m) {
 }
 
 void BindBody(py::module_& m) {
+  py::class_<ShapeSettings> shape(m, "ShapeSettings",
+                                  "A body's collision shape in its body frame, with friction, "
+                                  "restitution and collision filter (docs/contacts.md).");
+  DefKeywordConstructors(shape);
+  shape.def_readwrite("type", &ShapeSettings::type)
+      .def_readwrite("radius", &ShapeSettings::radius, "m: sphere, capsule")
+      .def_readwrite("half_height", &ShapeSettings::half_height,
+                     "m: capsule, half its core segment (along the shape's Y)");
+  DefArray(shape, "half_extents", &ShapeSettings::half_extents, "m: box");
+  DefArray(shape, "position", &ShapeSettings::position,
+           "shape centre in the body frame, relative to the centre of mass (m)");
+  DefArray(shape, "rotation", &ShapeSettings::rotation,
+           "shape frame in the body frame, quaternion (x, y, z, w)");
+  shape.def_readwrite("friction", &ShapeSettings::friction, "combined as sqrt(f1 f2)")
+      .def_readwrite("restitution", &ShapeSettings::restitution, "[0, 1], combined as max")
+      .def_readwrite("collision_group", &ShapeSettings::collision_group)
+      .def_readwrite("collision_mask", &ShapeSettings::collision_mask,
+                     "two shapes meet when (group1 & mask2) and (group2 & mask1)")
+      .def_readwrite("collide_with_joined", &ShapeSettings::collide_with_joined,
+                     "also collide with bodies a constraint joins");
+
   py::class_<BodySettings> body(m, "BodySettings",
                                 "One body of a scene (Jolt's BodyCreationSettings and defaults). "
                                 "Vectors are tuples; assign any sequence or numpy array.");
@@ -171,7 +198,8 @@ void BindBody(py::module_& m) {
       .def_readwrite("max_linear_velocity", &BodySettings::max_linear_velocity, "m/s")
       .def_readwrite("max_angular_velocity", &BodySettings::max_angular_velocity, "rad/s")
       .def_readwrite("gravity_factor", &BodySettings::gravity_factor)
-      .def_readwrite("allowed_dofs", &BodySettings::allowed_dofs);
+      .def_readwrite("allowed_dofs", &BodySettings::allowed_dofs)
+      .def_readwrite("shape", &BodySettings::shape, "collision shape (ShapeSettings)");
 
   py::class_<PathPoint> point(m, "PathPoint",
                               "A control point of a Hermite path: position, tangent, normal.");
@@ -201,7 +229,15 @@ void BindStepAndBatchOptions(py::module_& m) {
       .def_readwrite("exact_tolerance", &StepSettings::exact_tolerance,
                      "m or rad: EXACT's Newton steps stop at this error of every row group")
       .def_readwrite("exact_geometric_stiffness", &StepSettings::exact_geometric_stiffness,
-                     "EXACT: implicit geometric stiffness, x the backward-Euler amount (0: off)");
+                     "EXACT: implicit geometric stiffness, x the backward-Euler amount (0: off)")
+      .def_readwrite("speculative_contact_distance", &StepSettings::speculative_contact_distance,
+                     "m: shapes closer than this make contact points")
+      .def_readwrite("penetration_slop", &StepSettings::penetration_slop,
+                     "m: penetration left alone by the position phase")
+      .def_readwrite("max_penetration_distance", &StepSettings::max_penetration_distance,
+                     "m: most penetration one position step corrects")
+      .def_readwrite("min_velocity_for_restitution", &StepSettings::min_velocity_for_restitution,
+                     "m/s: slower approaches do not bounce");
 
   py::class_<BatchOptions> options(m, "BatchOptions", "How a Batch runs its worlds.");
   DefKeywordConstructors(options);

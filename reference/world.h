@@ -16,13 +16,17 @@
 //                         v ← v·max(0, 1 − c_lin·dt),  ω ← ω·max(0, 1 − c_ang·dt),
 //                         clamp |v| ≤ v_max, |ω| ≤ ω_max (uniform rescale)
 //     2. constraints with at least one dynamic body (Jolt solves no others), in
-//        scene order: Setup (poses at the start of the sub-step)
-//     3. WarmStart(ratio) of each
-//     4. up to N_v velocity iterations over all of them; stop after an iteration
-//        in which no part applied an impulse (result-neutral, spec 1.1)
+//        scene order: Setup (poses at the start of the sub-step); then the
+//        contact slots in the order of their body pairs: detection and Setup
+//        (reference/contact_constraint.h, docs/contacts.md)
+//     3. WarmStart(ratio) of each, contacts after the joints
+//     4. up to N_v velocity iterations over all of them, contacts after the
+//        joints; stop after an iteration in which neither a joint nor a contact
+//        applied an impulse (result-neutral, spec 1.1)
 //     5. integrate: dynamic bodies clamp v, ω again; every non-static body
 //        q ← AddRotationStep(ω·dt) (rotation first), then x ← x + lockT(v·dt)
-//     6. up to N_p position iterations (Baumgarte β), stop when nothing moved
+//     6. up to N_p position iterations (Baumgarte β), joints then contacts,
+//        stop when nothing moved
 //   forces and torques set for this Step are then cleared (Jolt's AddForce: they
 //   act in every sub-step of the Step they were set for).
 //
@@ -38,9 +42,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -48,6 +54,7 @@
 #include "manyworlds/scene.h"
 #include "reference/body.h"
 #include "reference/cone_constraint.h"
+#include "reference/contact_constraint.h"
 #include "reference/distance_constraint.h"
 #include "reference/exact_solve.h"
 #include "reference/fixed_constraint.h"
@@ -77,8 +84,10 @@ class World {
                    SwingTwistConstraint<T>, SixDofConstraint<T>, PathConstraint<T>>;
 
   // Converts every body and constraint (world-space settings refer to the poses
-  // in the scene). Throws std::invalid_argument for body or helper indices that do
-  // not fit, and for a gear or rack-and-pinion with a static body.
+  // in the scene) and makes the contact slots. Throws std::invalid_argument for
+  // body or helper indices that do not fit, for a gear or rack-and-pinion with a
+  // static body, for a plane shape on a body that is not static and for a pair
+  // of shapes that collide but is not supported (naming both bodies).
   explicit World(const Scene& scene) {
     for (const BodySettings& settings : scene.bodies()) {
       bodies_.push_back(MakeBody<T>(settings));
@@ -91,13 +100,27 @@ class World {
           constraints[index]));
     }
     for (std::size_t index = 0; index < constraints_.size(); ++index) CheckHelpers(index);
+    MakeContacts(scene);
   }
 
-  // One step of settings.delta_time (see the header comment).
+  // One step of settings.delta_time (see the header comment). Throws
+  // std::invalid_argument for bad settings (contact settings negative or not
+  // finite included) and for JointSolver::kExact with contact slots.
   void Step(const StepSettings& settings) {
     if (!(settings.delta_time > 0.0f) || settings.substeps < 1 ||
         settings.velocity_iterations < 0 || settings.position_iterations < 0) {
       throw std::invalid_argument("reference::World::Step: invalid step settings");
+    }
+    for (const float value :
+         {settings.speculative_contact_distance, settings.penetration_slop,
+          settings.max_penetration_distance, settings.min_velocity_for_restitution}) {
+      if (!(std::isfinite(value) && value >= 0.0f)) {
+        throw std::invalid_argument("reference::World::Step: invalid contact settings");
+      }
+    }
+    if (settings.solver == JointSolver::kExact && !contacts_.empty()) {
+      throw std::invalid_argument(
+          "reference::World::Step: the exact solve does not take a scene with contacts");
     }
     const T step_dt = T(settings.delta_time) / T(settings.substeps);
     const T first_ratio = settings.warm_start && previous_step_dt_ > T(0)
@@ -182,6 +205,9 @@ class World {
   std::size_t body_count() const { return bodies_.size(); }
   std::size_t constraint_count() const { return constraints_.size(); }
   const Constraint& constraint(std::size_t i) const { return constraints_.at(i); }
+  // Contact slots (docs/contacts.md), in the order of their body pairs (i, j).
+  std::size_t contact_count() const { return contacts_.size(); }
+  const ContactConstraint<T>& contact(std::size_t i) const { return contacts_.at(i); }
 
   // The hinge's current angle (body 2 relative to body 1, in (−π, π]) and the
   // slider's current position, from the bodies as they are now.
@@ -290,6 +316,64 @@ class World {
     const T position = SliderPosition(slider);
     return std::get<SliderConstraint<T>>(constraints_[slider]).body2() == body ? position
                                                                                : -position;
+  }
+
+  static std::string BodyName(const Scene& scene, std::size_t index) {
+    const std::string& name = scene.bodies()[index].name;
+    return "body " + std::to_string(index) + (name.empty() ? "" : " ('" + name + "')");
+  }
+
+  // The contact slots of docs/contacts.md: every pair i < j of bodies with
+  // shapes whose groups and masks meet, with at least one dynamic body, not
+  // joined by a constraint (unless either shape collides with joined bodies).
+  // Such a pair must be a plane with a sphere, capsule or box; a plane is on a
+  // static body.
+  void MakeContacts(const Scene& scene) {
+    const std::vector<BodySettings>& settings = scene.bodies();
+    for (std::size_t i = 0; i < settings.size(); ++i) {
+      if (settings[i].shape.type == ShapeType::kPlane &&
+          settings[i].motion_type != MotionType::kStatic) {
+        throw std::invalid_argument("reference::World: " + BodyName(scene, i) +
+                                    " has a plane shape but is not static");
+      }
+    }
+    std::set<std::pair<std::size_t, std::size_t>> joined;
+    for (const Constraint& constraint : constraints_) {
+      std::visit(
+          [&](const auto& c) {
+            joined.insert({std::min(c.body1(), c.body2()), std::max(c.body1(), c.body2())});
+          },
+          constraint);
+    }
+    const auto is_plane_pair = [](ShapeType plane, ShapeType other) {
+      return plane == ShapeType::kPlane &&
+             (other == ShapeType::kSphere || other == ShapeType::kCapsule ||
+              other == ShapeType::kBox);
+    };
+    for (std::size_t i = 0; i < settings.size(); ++i) {
+      for (std::size_t j = i + 1; j < settings.size(); ++j) {
+        const ShapeSettings& shape_i = settings[i].shape;
+        const ShapeSettings& shape_j = settings[j].shape;
+        if (shape_i.type == ShapeType::kNone || shape_j.type == ShapeType::kNone) continue;
+        if ((shape_i.collision_group & shape_j.collision_mask) == 0 ||
+            (shape_j.collision_group & shape_i.collision_mask) == 0) {
+          continue;
+        }
+        if (!bodies_[i].IsDynamic() && !bodies_[j].IsDynamic()) continue;
+        if (joined.count({i, j}) != 0 && !shape_i.collide_with_joined &&
+            !shape_j.collide_with_joined) {
+          continue;
+        }
+        if (!is_plane_pair(shape_i.type, shape_j.type) &&
+            !is_plane_pair(shape_j.type, shape_i.type)) {
+          throw std::invalid_argument(
+              "reference::World: " + BodyName(scene, i) + " and " + BodyName(scene, j) +
+              " collide but their pair of shapes is not supported (only a plane with a "
+              "sphere, capsule or box): put them in collision groups that do not meet");
+        }
+        contacts_.emplace_back(i, j, shape_i, shape_j);
+      }
+    }
   }
 
   // Jolt solves a constraint only if at least one of its bodies is dynamic (spec 1.5).
@@ -520,17 +604,34 @@ class World {
       }
     };
 
+    // Contacts come after every joint in each phase (docs/contacts.md); every
+    // slot has a dynamic body (MakeContacts), so all are solved.
+    const ContactSettings<T> contact_settings{
+        T(settings.speculative_contact_distance), T(settings.penetration_slop),
+        T(settings.max_penetration_distance), T(settings.min_velocity_for_restitution)};
+    const Vec3<T> gravity = ToVec3<T>(settings.gravity);
+
     for_each_solved([&](auto& c, Body<T>& body1, Body<T>& body2) {
       c.SetupVelocityConstraint(body1, body2, dt);
     });
+    for (ContactConstraint<T>& contact : contacts_) {
+      contact.Setup(bodies_[contact.body1()], motion_[contact.body1()], bodies_[contact.body2()],
+                    motion_[contact.body2()], dt, gravity, contact_settings);
+    }
     for_each_solved([&](auto& c, Body<T>& body1, Body<T>& body2) {
       c.WarmStartVelocityConstraint(body1, body2, warm_start_ratio);
     });
+    for (ContactConstraint<T>& contact : contacts_) {
+      contact.WarmStart(bodies_[contact.body1()], bodies_[contact.body2()], warm_start_ratio);
+    }
     for (int iteration = 0; iteration < settings.velocity_iterations; ++iteration) {
       bool applied = false;
       for_each_solved([&](auto& c, Body<T>& body1, Body<T>& body2) {
         applied |= c.SolveVelocityConstraint(body1, body2, dt);
       });
+      for (ContactConstraint<T>& contact : contacts_) {
+        applied |= contact.SolveVelocity(bodies_[contact.body1()], bodies_[contact.body2()]);
+      }
       if (!applied) break;
     }
 
@@ -540,6 +641,11 @@ class World {
     for (int iteration = 0; iteration < settings.position_iterations; ++iteration) {
       bool moved = false;
       for (Constraint* constraint : solved) moved |= SolvePosition(*constraint, dt, baumgarte);
+      for (ContactConstraint<T>& contact : contacts_) {
+        moved |= contact.SolvePosition(bodies_[contact.body1()], bodies_[contact.body2()],
+                                       baumgarte, contact_settings.penetration_slop,
+                                       contact_settings.max_penetration_distance);
+      }
       if (!moved) break;
     }
   }
@@ -547,6 +653,7 @@ class World {
   std::vector<Body<T>> bodies_;
   std::vector<BodyMotionSettings<T>> motion_;
   std::vector<Constraint> constraints_;
+  std::vector<ContactConstraint<T>> contacts_;  // slots in the order of (body1, body2)
   T previous_step_dt_ = T(0);  // Jolt's mPreviousStepDeltaTime (warm-start ratio)
   // JointSolver::kExact: each row group's impulse of the last velocity solve
   // (kept for point groups). The

@@ -79,7 +79,7 @@ bool SameWorld(const std::vector<float>& sa, std::size_t a, const std::vector<fl
 class DeterminismTest : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(DeterminismTest, ThreadsAndTaskSplitsGiveIdenticalBits) {
-  const Scene scene = MakeReferenceScene(GetParam());
+  const Scene scene = MakeScene(GetParam());
   const SceneActions actions(GetParam());
   const std::size_t worlds = 200;  // 13 blocks, the last one partly padding
   auto identity = [](std::size_t w) { return w; };
@@ -100,7 +100,7 @@ TEST_P(DeterminismTest, ThreadsAndTaskSplitsGiveIdenticalBits) {
 }
 
 TEST_P(DeterminismTest, AWorldIsTheSameInAnyLaneAloneOrAmongOthers) {
-  const Scene scene = MakeReferenceScene(GetParam());
+  const Scene scene = MakeScene(GetParam());
   const SceneActions actions(GetParam());
   const std::size_t worlds = 37;
   Batch many(scene, worlds);
@@ -136,7 +136,7 @@ TEST_P(DeterminismTest, AWorldIsTheSameInAnyLaneAloneOrAmongOthers) {
 }
 
 TEST_P(DeterminismTest, ResettingOrChangingOneWorldLeavesTheOthersBitIdentical) {
-  const Scene scene = MakeReferenceScene(GetParam());
+  const Scene scene = MakeScene(GetParam());
   const SceneActions actions(GetParam());
   const std::size_t worlds = 40;
   Batch plain(scene, worlds), touched(scene, worlds);
@@ -183,7 +183,7 @@ TEST_P(DeterminismTest, ResettingOrChangingOneWorldLeavesTheOthersBitIdentical) 
 // replays on the other. (SSE4 and the scalar target have no FMA: their bits
 // differ, docs/testing.md.)
 TEST_P(DeterminismTest, Avx2AndAvx3GiveIdenticalBits) {
-  const Scene scene = MakeReferenceScene(GetParam());
+  const Scene scene = MakeScene(GetParam());
   const SceneActions actions(GetParam());
   std::vector<std::vector<float>> results;
   for (const std::int64_t target : {std::int64_t{HWY_AVX3}, std::int64_t{HWY_AVX2}}) {
@@ -203,8 +203,13 @@ TEST_P(DeterminismTest, Avx2AndAvx3GiveIdenticalBits) {
 }
 
 INSTANTIATE_TEST_SUITE_P(ReferenceScenes, DeterminismTest,
-                         ::testing::Values("cartpole", "chain16", "rackpinion", "geartrain", "ragdoll"),
-                         [](const auto& info) { return info.param; });
+                         ::testing::Values("cartpole", "chain16", "rackpinion", "geartrain", "ragdoll",
+                                           "box-drop", "sphere-roll"),
+                         [](const auto& info) {
+                           std::string name = info.param;
+                           for (char& c : name) c = c == '-' ? '_' : c;  // a test name
+                           return name;
+                         });
 
 }  // namespace
 }  // namespace manyworlds

@@ -297,6 +297,10 @@ struct StepperKind {
   std::string name;
   std::function<std::unique_ptr<Stepper>(const Scene&)> make;
   bool is_batch = false;
+  // Whether the stepper computes in double (the reference in double); the
+  // batch and the float reference compute in float. For tolerances that are
+  // rounding bounds of the precision.
+  bool is_double = false;
 };
 
 // gtest prints a failing test's parameter with this.
@@ -308,19 +312,19 @@ inline std::vector<StepperKind> AllStepperKinds() {
                    [](const Scene& scene) -> std::unique_ptr<Stepper> {
                      return std::make_unique<ReferenceStepper<float>>(scene);
                    },
-                   false});
+                   false, false});
   kinds.push_back({"reference_double",
                    [](const Scene& scene) -> std::unique_ptr<Stepper> {
                      return std::make_unique<ReferenceStepper<double>>(scene);
                    },
-                   false});
+                   false, true});
   for (const StepKernels* kernels : SupportedKernels<StepKernels>()) {
     const std::int64_t target = kernels->target.bits;
     kinds.push_back({std::string("batch_") + hwy::TargetName(target),
                      [target](const Scene& scene) -> std::unique_ptr<Stepper> {
                        return std::make_unique<BatchStepper>(scene, target);
                      },
-                     true});
+                     true, false});
   }
   return kinds;
 }

@@ -6,7 +6,8 @@ Usage: program_test.py MANYWORLDS CASE, CASE one of
                  names the bad value and what is accepted, then one hint line,
                  and writes nothing to stdout
   unknown-scene  `run --scene nosuch` lists every id `manyworlds scenes`
-                 lists (AllSceneIds()), reference and stress scenes grouped
+                 lists (AllSceneIds()), reference, stress and contact scenes
+                 grouped
   scenes         `scenes`: one line per scene with bodies, constraints and a
                  description
   progress-pty   with stderr on a pseudo-terminal a long run shows a progress
@@ -109,15 +110,19 @@ def case_unknown_scene():
     if len(ids) < 20:
         fail(f"'scenes' lists only {len(ids)} ids")
     error = expect_usage_error(["run", "--scene", "nosuch"], "--scene", "'nosuch'")
-    listed = re.search(r"valid ids: reference scenes (.*); stress scenes (.*)$", error)
+    listed = re.search(
+        r"valid ids: reference scenes (.*); stress scenes (.*); contact scenes (.*)$", error)
     if not listed:
-        fail(f"the ids are not grouped into reference and stress scenes: {error!r}")
-    named = set(listed.group(1).split(", ")) | set(listed.group(2).split(", "))
+        fail(f"the ids are not grouped into reference, stress and contact scenes: {error!r}")
+    named = set()
+    for group in listed.groups():
+        named |= set(group.split(", "))
     missing = [i for i in ids if i not in named]
     if missing:
         fail(f"the error does not list {missing}: {error!r}")
-    if "cartpole" not in listed.group(1) or "far-1e4" not in listed.group(2):
-        fail(f"reference and stress groups mixed up: {error!r}")
+    if ("cartpole" not in listed.group(1) or "far-1e4" not in listed.group(2)
+            or "box-drop" not in listed.group(3)):
+        fail(f"reference, stress and contact groups mixed up: {error!r}")
 
 
 def case_scenes():

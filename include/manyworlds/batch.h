@@ -134,6 +134,15 @@ struct StepSettings {
   // chain16-r1000 with 30); larger values damp more and let the heavy
   // chains hold with fewer Newton steps; 0 is off.
   float exact_geometric_stiffness = 1.0f;
+  // Contacts (Jolt's PhysicsSettings, docs/contacts.md): shapes closer than
+  // the speculative distance make contact points; up to the slop a
+  // penetration is left alone; a position step corrects at most
+  // max_penetration_distance of it; an approach slower than
+  // min_velocity_for_restitution does not bounce.
+  float speculative_contact_distance = 0.02f;  // m
+  float penetration_slop = 0.02f;              // m
+  float max_penetration_distance = 0.2f;       // m
+  float min_velocity_for_restitution = 1.0f;   // m/s
 };
 
 // A world's constraint position error split by unit (Batch::MaxConstraintErrorSplit).

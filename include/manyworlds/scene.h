@@ -63,6 +63,38 @@ constexpr bool AllowsRotation(AllowedDofs dofs) {
                   AllowedDofs::kRotationZ)) != AllowedDofs::kNone;
 }
 
+// The shape a body collides with (Jolt's primitive shapes), in the body
+// frame: centred at `position` (relative to the centre of mass), turned by
+// `rotation`. Contacts are made only between shapes (docs/contacts.md), and
+// the same shapes are in every world.
+enum class ShapeType : std::uint8_t {
+  kNone,     // no collision
+  kSphere,   // radius
+  kCapsule,  // a segment along the shape's Y axis, +-half_height, swept by radius
+  kBox,      // half_extents along the shape's axes, sharp corners
+  kPlane,    // the half-space below the shape's XZ plane (outward normal: the
+             // shape's +Y); static bodies only, a ground or a wall
+};
+
+struct ShapeSettings {
+  ShapeType type = ShapeType::kNone;
+  float radius = 0.5f;       // m: sphere, capsule
+  float half_height = 0.5f;  // m: capsule, half the length of its core segment
+  Float3 half_extents{0.5f, 0.5f, 0.5f};  // m: box
+  Float3 position{0, 0, 0};               // body frame, relative to the centre of mass
+  Quaternion rotation{0, 0, 0, 1};        // shape frame to body frame
+  // Jolt's body defaults; a contact uses sqrt(friction1 friction2) and
+  // max(restitution1, restitution2).
+  float friction = 0.2f;
+  float restitution = 0.0f;
+  // Which shapes meet: two shapes make contacts when (group1 & mask2) and
+  // (group2 & mask1) are non-zero, at least one body is dynamic, and no
+  // constraint joins the two bodies (unless collide_with_joined).
+  std::uint32_t collision_group = 1;
+  std::uint32_t collision_mask = 0xffffffffu;
+  bool collide_with_joined = false;
+};
+
 struct BodySettings {
   std::string name;  // used in error messages and the printed plan
   MotionType motion_type = MotionType::kDynamic;
@@ -79,6 +111,7 @@ struct BodySettings {
   float max_angular_velocity = 0.25f * kPi * 60.0f;  // rad/s
   float gravity_factor = 1.0f;
   AllowedDofs allowed_dofs = AllowedDofs::kAll;  // world axes; see AllowedDofs
+  ShapeSettings shape;  // none by default: the body collides with nothing
 };
 
 // How the points and axes of a constraint's settings are given.

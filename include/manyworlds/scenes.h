@@ -61,17 +61,24 @@ std::vector<std::string> StressSceneIds();
 // id and listing the valid ones.
 Scene MakeStressScene(std::string_view id);
 
+// The contact scenes (docs/scenes.md, docs/contacts.md): box-drop,
+// sphere-roll. Shapes on a ground plane; none has an action.
+std::vector<std::string> ContactSceneIds();
+// The contact scene `id` (one of ContactSceneIds()). Throws
+// std::invalid_argument naming the unknown id and listing the valid ones.
+Scene MakeContactScene(std::string_view id);
 // The step settings a reference or stress scene is run with: StepSettings{}
 // (the spec's defaults) for every scene except dt-1e-4 (delta_time 1e-4 s)
 // and dt-1/15 (1/15 s). Throws std::invalid_argument for an unknown id, as
 // MakeScene.
 StepSettings SceneStepSettings(std::string_view id);
 
-// Every scene id, reference then stress (each once), and the scene of any of
-// them (MakeReferenceScene or MakeStressScene): what the main program, the
-// benchmarks and the accuracy sweep accept. Throws std::invalid_argument for
-// an unknown id: "unknown scene 'ID'; valid ids: reference scenes cartpole,
-// ...; stress scenes chain16-r1000, ...", every id of AllSceneIds() grouped.
+// Every scene id, reference then stress then contact (each once), and the
+// scene of any of them (MakeReferenceScene, MakeStressScene or
+// MakeContactScene): what the main program, the benchmarks and the accuracy
+// sweep accept. Throws std::invalid_argument for an unknown id: "unknown
+// scene 'ID'; valid ids: reference scenes cartpole, ...; stress scenes
+// chain16-r1000, ...; contact scenes box-drop, ...", every id grouped.
 std::vector<std::string> AllSceneIds();
 Scene MakeScene(std::string_view id);
 

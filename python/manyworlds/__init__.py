@@ -50,6 +50,7 @@ class WorldHealthBits(_enum.IntFlag):
 # properties (one per C++ field, in declaration order).
 SETTINGS_TYPES = (
     _core.BodySettings,
+    _core.ShapeSettings,
     _core.SpringSettings,
     _core.MotorSettings,
     _core.PathPoint,

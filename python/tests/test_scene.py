@@ -173,9 +173,11 @@ def test_hand_built_cartpole_is_the_reference_cartpole():
 
 def test_scene_catalogue():
     reference, stress = mw.reference_scene_ids(), mw.stress_scene_ids()
+    contact = mw.contact_scene_ids()
     assert reference[0] == "cartpole" and "ragdoll" in reference
     assert "spring-0.5" in stress and "mass-range-hanging" in stress
-    assert mw.all_scene_ids() == reference + [s for s in stress if s not in reference]
+    assert "box-drop" in contact and "sphere-roll" in contact
+    assert mw.all_scene_ids() == reference + [s for s in stress if s not in reference] + contact
     for scene_id in mw.all_scene_ids():
         scene = mw.make_scene(scene_id)
         assert mw.Batch(scene, 16).num_bodies == scene.num_bodies

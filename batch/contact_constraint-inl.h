@@ -1,0 +1,273 @@
+// Contact slots across worlds: each substep finds the points of a slot's
+// shape pair in every world of the block from the poses at the substep's
+// start (docs/contacts.md, "Points of a plane pair"), then the contact part
+// (kernels/contact-inl.h) makes and solves its rows. Which worlds touch, and
+// which points each keeps, are lane masks.
+//
+// Plane: outward normal n_p (the plane shape's +Y), a point o on it,
+// phi(y) = n_p.(y - o). A point is kept where phi(shape point) < D + 1 mm,
+// the manifold exists where its deepest candidate has phi < D (D the
+// speculative contact distance); a kept point's partner on the plane is its
+// projection y - phi(y) n_p.
+//   sphere (c, r):   c - r n_p
+//   capsule:         ends a = c - h a^, b = c + h a^; lying flat (|2h a^.n_p| <
+//                    0.02, not parallel): a - r w^, b - r w^ with w^ the unit
+//                    part of n_p across a^; else the lower end e - r n_p
+//   box:             the 4 corners of the face whose axis is most along n_p,
+//                    on the side facing the plane, in polygon order
+
+#if defined(MANYWORLDS_BATCH_CONTACT_CONSTRAINT_INL_H_) == defined(HWY_TARGET_TOGGLE)
+#ifdef MANYWORLDS_BATCH_CONTACT_CONSTRAINT_INL_H_
+#undef MANYWORLDS_BATCH_CONTACT_CONSTRAINT_INL_H_
+#else
+#define MANYWORLDS_BATCH_CONTACT_CONSTRAINT_INL_H_
+#endif
+
+#include <cstddef>
+
+#include "batch/constraint_block.h"
+#include "batch/contact_plan.h"
+#include "kernels/contact-inl.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace manyworlds {
+namespace HWY_NAMESPACE {
+
+// Jolt's manifold tolerance: points up to this beyond the speculative
+// distance are kept once the manifold exists.
+inline constexpr float kContactManifoldTolerance = 1.0e-3f;
+// Jolt's capsule projection slop: a capsule lies flat on a plane (two
+// points) when its ends' heights differ by less than this.
+inline constexpr float kCapsuleProjectionSlop = 0.02f;
+
+// A contact slot inside one block.
+struct ContactBlock {
+  const ContactPlan& plan;
+  BodyPair bodies;
+  const BodyMotionLanes* motion1;  // null unless dynamic
+  const BodyMotionLanes* motion2;
+  ContactLanes& manifold;
+  ContactPointLanes* points;
+};
+
+inline ContactBlock ContactInBlock(const StepPlan& plan, std::size_t contact,
+                                   std::byte* block) {
+  const ContactPlan& c = plan.contacts[contact];
+  const auto motion = [&](std::size_t offset) {
+    return offset == kAbsent ? nullptr : &At<BodyMotionLanes>(block, offset);
+  };
+  return ContactBlock{c,
+                      BodyPair{&BodyAt(plan, block, c.body1), c.motion1,
+                               &BodyAt(plan, block, c.body2), c.motion2},
+                      motion(c.motion_offset1),
+                      motion(c.motion_offset2),
+                      At<ContactLanes>(block, c.offset),
+                      &At<ContactPointLanes>(block, c.points_offset)};
+}
+
+// Uniform contact numbers of one substep.
+struct ContactStepScalars {
+  ContactScalars part;
+  LaneVec speculative_distance;
+  Vec3 gravity;
+};
+
+// A shape's frame in world space in one chunk: its centre and rotation.
+struct ShapeFrame {
+  Vec3 centre;
+  Quat rotation;
+};
+
+inline ShapeFrame WorldShapeFrame(const BodyLanes& body, const ContactShape& shape,
+                                  std::size_t offset) {
+  const Quat body_rotation = LoadQuat(body.rotation, offset);
+  const Vec3 local{Splat(shape.position[0]), Splat(shape.position[1]), Splat(shape.position[2])};
+  const Quat local_rotation{Splat(shape.rotation[0]), Splat(shape.rotation[1]),
+                            Splat(shape.rotation[2]), Splat(shape.rotation[3])};
+  return {Add(LoadVec3(body.position, offset), Rotate(body_rotation, local)),
+          Mul(body_rotation, local_rotation)};
+}
+
+// The plane of a chunk: outward normal and a point on it.
+struct PlaneLanes {
+  Vec3 normal;
+  Vec3 origin;
+  LaneVec Distance(const Vec3& y) const { return Dot(normal, Sub(y, origin)); }
+  Vec3 Project(const Vec3& y) const { return Sub(y, Scale(normal, Distance(y))); }
+};
+
+// Up to kMaxContactPoints shape points (in slot order) and which are kept,
+// each paired with its projection on the plane.
+struct PlanePoints {
+  Vec3 on_shape[kMaxContactPoints];
+  LaneMask keep[kMaxContactPoints];
+};
+
+inline PlanePoints SpherePoints(const PlaneLanes& plane, const ShapeFrame& sphere,
+                                const ContactShape& shape, LaneVec speculative) {
+  PlanePoints out;
+  out.on_shape[0] = Sub(sphere.centre, Scale(plane.normal, Splat(shape.radius)));
+  out.keep[0] = hn::Lt(plane.Distance(out.on_shape[0]), speculative);
+  return out;
+}
+
+inline PlanePoints CapsulePoints(const PlaneLanes& plane, const ShapeFrame& capsule,
+                                 const ContactShape& shape, LaneVec speculative,
+                                 LaneVec tolerance) {
+  const Vec3 axis = Rotate(capsule.rotation, Vec3{Zero(), Splat(1.0f), Zero()});
+  const Vec3 half = Scale(axis, Splat(shape.half_height));
+  const Vec3 end_a = Sub(capsule.centre, half);
+  const Vec3 end_b = Add(capsule.centre, half);
+  const LaneVec radius = Splat(shape.radius);
+  const LaneVec along = Dot(axis, plane.normal);
+  const LaneMask flat = hn::And(
+      hn::Lt(hn::Abs(hn::Mul(Splat(2.0f * shape.half_height), along)),
+             Splat(kCapsuleProjectionSlop)),
+      hn::Lt(hn::Abs(along), Splat(1.0f)));
+  // Lying flat: both ends, pushed across the axis towards the plane.
+  const Vec3 across = Normalize(Sub(plane.normal, Scale(axis, along)));
+  const Vec3 flat_a = Sub(end_a, Scale(across, radius));
+  const Vec3 flat_b = Sub(end_b, Scale(across, radius));
+  const LaneVec phi_a = plane.Distance(flat_a);
+  const LaneVec phi_b = plane.Distance(flat_b);
+  const LaneMask flat_exists = hn::Lt(hn::Min(phi_a, phi_b), speculative);
+  // Otherwise the lower end (a on a tie), straight towards the plane.
+  const Vec3 lower = Select(hn::Le(plane.Distance(end_a), plane.Distance(end_b)), end_a, end_b);
+  const Vec3 tip = Sub(lower, Scale(plane.normal, radius));
+  const LaneMask tip_exists = hn::Lt(plane.Distance(tip), speculative);
+
+  PlanePoints out;
+  out.on_shape[0] = Select(flat, flat_a, tip);
+  out.keep[0] = hn::Or(hn::And(flat, hn::And(flat_exists, hn::Lt(phi_a, tolerance))),
+                       hn::AndNot(flat, tip_exists));
+  out.on_shape[1] = flat_b;
+  out.keep[1] = hn::And(flat, hn::And(flat_exists, hn::Lt(phi_b, tolerance)));
+  return out;
+}
+
+inline PlanePoints BoxPoints(const PlaneLanes& plane, const ShapeFrame& box,
+                             const ContactShape& shape, LaneVec speculative,
+                             LaneVec tolerance) {
+  // The box's axes (scaled by the half extents) in world space.
+  const Vec3 axes[3] = {
+      Rotate(box.rotation, Vec3{Splat(shape.half_extents[0]), Zero(), Zero()}),
+      Rotate(box.rotation, Vec3{Zero(), Splat(shape.half_extents[1]), Zero()}),
+      Rotate(box.rotation, Vec3{Zero(), Zero(), Splat(shape.half_extents[2])})};
+  const Vec3 m = InverseRotate(box.rotation, plane.normal);
+  const LaneVec ax = hn::Abs(m.x), ay = hn::Abs(m.y), az = hn::Abs(m.z);
+  const LaneMask face_x = hn::And(hn::Ge(ax, ay), hn::Ge(ax, az));
+  const LaneMask face_y = hn::AndNot(face_x, hn::Ge(ay, az));
+  const LaneMask face_z = hn::Not(hn::Or(face_x, face_y));
+  // The face facing the plane sits at -sign(m_k) along axis k; its other two
+  // axes (u, v) in increasing index.
+  const LaneVec m_k = hn::IfThenElse(face_x, m.x, hn::IfThenElse(face_y, m.y, m.z));
+  const LaneVec face_side = hn::IfThenElse(hn::Gt(m_k, Zero()), Splat(-1.0f), Splat(1.0f));
+  const Vec3 face_axis = Select(face_x, axes[0], Select(face_y, axes[1], axes[2]));
+  const Vec3 u_axis = Select(face_x, axes[1], axes[0]);
+  const Vec3 v_axis = Select(face_z, axes[1], axes[2]);
+  const Vec3 face_centre = Add(box.centre, Scale(face_axis, face_side));
+  static constexpr float kCornerSigns[kMaxContactPoints][2] = {
+      {-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+  PlanePoints out;
+  LaneVec deepest = Splat(3.402823466e38f);
+  LaneVec phi[kMaxContactPoints];
+  for (std::size_t j = 0; j < kMaxContactPoints; ++j) {
+    out.on_shape[j] = Add(face_centre, Add(Scale(u_axis, Splat(kCornerSigns[j][0])),
+                                           Scale(v_axis, Splat(kCornerSigns[j][1]))));
+    phi[j] = plane.Distance(out.on_shape[j]);
+    deepest = hn::Min(deepest, phi[j]);
+  }
+  const LaneMask exists = hn::Lt(deepest, speculative);
+  for (std::size_t j = 0; j < kMaxContactPoints; ++j) {
+    out.keep[j] = hn::And(exists, hn::Lt(phi[j], tolerance));
+  }
+  return out;
+}
+
+// The candidates of a plane pair in one chunk, in body order.
+inline ContactCandidates PlanePairCandidates(const ContactBlock& c, LaneVec speculative,
+                                             std::size_t offset) {
+  const ContactPlan& plan = c.plan;
+  const BodyLanes& plane_body = plan.plane_is_body1 ? *c.bodies.body1 : *c.bodies.body2;
+  const BodyLanes& shape_body = plan.plane_is_body1 ? *c.bodies.body2 : *c.bodies.body1;
+  const ShapeFrame plane_frame = WorldShapeFrame(plane_body, plan.plane, offset);
+  const PlaneLanes plane{Rotate(plane_frame.rotation, Vec3{Zero(), Splat(1.0f), Zero()}),
+                         plane_frame.centre};
+  const ShapeFrame shape = WorldShapeFrame(shape_body, plan.shape, offset);
+  const LaneVec tolerance = hn::Add(speculative, Splat(kContactManifoldTolerance));
+  PlanePoints points;
+  switch (plan.kind) {
+    case ContactPairKind::kPlaneSphere:
+      points = SpherePoints(plane, shape, plan.shape, speculative);
+      break;
+    case ContactPairKind::kPlaneCapsule:
+      points = CapsulePoints(plane, shape, plan.shape, speculative, tolerance);
+      break;
+    case ContactPairKind::kPlaneBox:
+      points = BoxPoints(plane, shape, plan.shape, speculative, tolerance);
+      break;
+  }
+  ContactCandidates found;
+  found.normal = plan.plane_is_body1 ? plane.normal : Neg(plane.normal);
+  for (std::size_t i = 0; i < plan.point_count; ++i) {
+    const Vec3 on_plane = plane.Project(points.on_shape[i]);
+    found.point1[i] = plan.plane_is_body1 ? on_plane : points.on_shape[i];
+    found.point2[i] = plan.plane_is_body1 ? points.on_shape[i] : on_plane;
+    found.keep[i] = points.keep[i];
+  }
+  return found;
+}
+
+// a_rel = g (gamma2 - gamma1) + F2/m2 - F1/m1 over the dynamic bodies.
+inline Vec3 RelativeForceAcceleration(const ContactBlock& c, const Vec3& gravity,
+                                      std::size_t offset) {
+  Vec3 acceleration = ZeroVec3();
+  const auto add = [&](const BodyLanes& body, const BodyMotionLanes* motion, float sign) {
+    if (motion == nullptr) return;
+    const Vec3 a = MulAdd(gravity, Load(motion->gravity_factor, offset),
+                          Scale(LoadVec3(motion->force, offset), Load(body.inv_mass, offset)));
+    acceleration = Add(acceleration, Scale(a, Splat(sign)));
+  };
+  add(*c.bodies.body1, c.motion1, -1.0f);
+  add(*c.bodies.body2, c.motion2, 1.0f);
+  return acceleration;
+}
+
+inline void ContactSetup(const ContactBlock& c, const ContactStepScalars& scalars) {
+  ForEachChunk([&](std::size_t offset) {
+    const ContactCandidates found = PlanePairCandidates(c, scalars.speculative_distance, offset);
+    ContactSetupChunk(c.bodies, found, RelativeForceAcceleration(c, scalars.gravity, offset),
+                      scalars.part, c.manifold, c.points, c.plan.point_count, offset);
+  });
+}
+
+inline void ContactWarmStart(const ContactBlock& c, float warm_start_ratio) {
+  const LaneVec ratio = Splat(warm_start_ratio);
+  ForEachChunk([&](std::size_t offset) {
+    ContactWarmStartChunk(c.bodies, c.manifold, c.points, c.plan.point_count, ratio, offset);
+  });
+}
+
+inline bool ContactSolveVelocity(const ContactBlock& c) {
+  bool applied = false;
+  ForEachChunk([&](std::size_t offset) {
+    applied |= AnyLane(
+        ContactSolveVelocityChunk(c.bodies, c.manifold, c.points, c.plan.point_count, offset));
+  });
+  return applied;
+}
+
+inline bool ContactSolvePosition(const ContactBlock& c, const ContactStepScalars& scalars) {
+  bool moved = false;
+  ForEachChunk([&](std::size_t offset) {
+    moved |= AnyLane(ContactSolvePositionChunk(c.bodies, c.manifold, c.points,
+                                               c.plan.point_count, scalars.part, offset));
+  });
+  return moved;
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace manyworlds
+HWY_AFTER_NAMESPACE();
+
+#endif  // MANYWORLDS_BATCH_CONTACT_CONSTRAINT_INL_H_

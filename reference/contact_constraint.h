@@ -1,0 +1,566 @@
+// Contact constraint of the reference world: one slot, a pair of bodies with
+// shapes (body 1 the lower index), solved after the joints in every phase of a
+// substep as Jolt solves its contact manifolds (docs/contacts.md, which follows
+// ../shared/docs/jolt-contacts.md §3-§6 in its snapshot friction model).
+// Scalar reference, written from those texts; nothing of batch/ or kernels/.
+//
+// Supported pairs: a plane (static body) with a sphere, capsule or box.
+//
+// ---- Points (every substep, from the poses at its start) ----
+// Plane: outward unit normal n_p (the plane shape's +Y), centre o, signed
+// distance φ(y) = n_p·(y − o). D = speculative distance, K_keep = D + 1 mm.
+// The shape gives candidate points y_j in a fixed order (sphere: c − r n_p;
+// capsule: both ends − r ŵ when it lies flat within 2 cm, else the lower end
+// − r n_p; box: the 4 corners of the face towards the plane). The manifold
+// exists when min_j φ(y_j) < D and keeps the candidates with φ < K_keep; each
+// kept point is (y_j on the shape, y_j − φ(y_j) n_p on the plane).
+// n points from body 1 to body 2: n_p when the plane is body 1, −n_p otherwise;
+// p1 is the point on body 1, p2 the point on body 2, so s = (p2 − p1)·n = φ.
+//
+// ---- Rows (Jolt's snapshot model) ----
+// Per kept point i, at the midpoint p_i = (p1_i + p2_i)/2, r1 = p_i − x1,
+// r2 = p_i − x2:
+//   normal:   K = m1⁻¹ + (r1×n)·I1⁻¹(r1×n) + m2⁻¹ + (r2×n)·I2⁻¹(r2×n)
+//             (dynamic bodies only), m_eff = 1/K (K = 0: inactive, Λ = 0)
+//             v_n = (v2 + ω2×r2 − v1 − ω1×r1)·n, b_spec = max(0, s/dt)
+//             b = e (v_n − Δv_f) if e > 0, v_n < −v_min_restitution and
+//             v_n < −b_spec; else b = b_spec.
+//             Δv_f = min(0, dt a_rel·n), a_rel = a2 − a1, a = γ g + m⁻¹ F for
+//             a dynamic body, 0 otherwise (the velocity the substep's forces
+//             added, so a bounce uses the approach speed before them).
+// Friction (μ > 0): one anchor c = mean of the midpoints; t1 = perp(n),
+// t2 = n × t1; two linear rows at c (b = 0); with ≥ 2 points an angular row
+// about n, K_a = n·I1⁻¹n + n·I2⁻¹n. d_i = |(p_i − c) − ((p_i − c)·n) n|.
+//
+// Each row (axis u, levers a1, a2; the angular row has u = 0, a1 = a2 = n):
+//   ċ = u·(v2 − v1) + a2·ω2 − a1·ω1,  Λ* = Λ + m_eff (−ċ − b)
+//   Δ = Λ_new − Λ:  v1 −= Δ m1⁻¹ u, ω1 −= Δ I1⁻¹a1, v2 += Δ m2⁻¹ u, ω2 += Δ I2⁻¹a2
+//
+// Velocity pass: L = μ Σ Λn_i, A = μ Σ d_i Λn_i (impulses so far); both
+// linear friction Λ* from the same velocities, scaled together onto the circle
+// |Λt| ≤ L; angular Λa = clamp(Λa*, −A, A); then each normal Λn = max(0, Λn*).
+// The bodies' velocities are read once, updated as rows are solved and written
+// back once (linear DOF mask at write-back), jolt-contacts.md §5.2.
+//
+// Warm start (ratio ρ): t1, t2, angular, normals in point order: Λ ← ρΛ, apply.
+// Persistence (to the next substep): a point takes the normal impulse of the
+// first of last substep's points whose body-local points (each body's COM
+// frame) are both within 1 cm of its own; friction impulses carry over when
+// the manifold existed last substep.
+//
+// Position pass, point by point, with the setup's n and body-local points:
+// p1, p2 from the transforms when this slot's pass starts, C = max(s + slop,
+// −max_penetration); if C < 0: r from the midpoint to the CURRENT centres of
+// mass, K with the current rotations, λ = −β C / K, x1 −= λ m1⁻¹ n,
+// q1 ← rotate(−λ I1⁻¹(r1×n)), x2 += λ m2⁻¹ n, q2 ← rotate(λ I2⁻¹(r2×n)).
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <stdexcept>
+
+#include "manyworlds/scene.h"
+#include "reference/body.h"
+#include "reference/math.h"
+#include "reference/world_setup.h"
+
+namespace manyworlds::reference {
+
+// The most points a slot holds (a box face's four corners).
+inline constexpr int kMaxContactPoints = 4;
+
+// StepSettings' contact fields in T (docs/contacts.md, Settings).
+template <class T>
+struct ContactSettings {
+  T speculative_contact_distance = T(0.02);
+  T penetration_slop = T(0.02);
+  T max_penetration_distance = T(0.2);
+  T min_velocity_for_restitution = T(1);
+};
+
+// A body's shape in T: where it sits in the body's COM frame and its sizes.
+template <class T>
+struct ContactShape {
+  ShapeType type = ShapeType::kNone;
+  T radius = T(0);
+  T half_height = T(0);
+  Vec3<T> half_extents = Vec3<T>::Zero();
+  Vec3<T> position = Vec3<T>::Zero();     // body COM frame
+  Quat<T> rotation = Quat<T>::Identity();  // shape frame to body frame
+};
+
+template <class T>
+ContactShape<T> MakeContactShape(const ShapeSettings& settings) {
+  ContactShape<T> shape;
+  shape.type = settings.type;
+  shape.radius = T(settings.radius);
+  shape.half_height = T(settings.half_height);
+  shape.half_extents = ToVec3<T>(settings.half_extents);
+  shape.position = ToVec3<T>(settings.position);
+  shape.rotation = ToQuat<T>(settings.rotation);
+  return shape;
+}
+
+// The candidate points of a plane against another shape, in the order of
+// docs/contacts.md; the manifold and the kept points are chosen by the caller.
+template <class T>
+struct PlaneCandidates {
+  int count = 0;
+  std::array<Vec3<T>, kMaxContactPoints> on_shape;  // world points on the shape
+};
+
+// Candidates of `shape` (world centre `centre`, world rotation `rotation`)
+// against the plane with outward unit normal n_p.
+template <class T>
+PlaneCandidates<T> PlaneContactCandidates(const Vec3<T>& n_p, const ContactShape<T>& shape,
+                                          const Vec3<T>& centre, const Quat<T>& rotation) {
+  PlaneCandidates<T> out;
+  out.on_shape.fill(Vec3<T>::Zero());
+  switch (shape.type) {
+    case ShapeType::kSphere:
+      out.count = 1;
+      out.on_shape[0] = centre - shape.radius * n_p;
+      break;
+    case ShapeType::kCapsule: {
+      const Vec3<T> axis = rotation * Vec3<T>::UnitY();
+      const Vec3<T> a = centre - shape.half_height * axis;
+      const Vec3<T> b = centre + shape.half_height * axis;
+      const T axis_dot_n = axis.dot(n_p);
+      // κ: how much higher one end is than the other. Below Jolt's capsule
+      // projection slop (2 cm) the capsule lies along the plane and both ends
+      // touch; the points go down from the ends along ŵ, the part of n_p across
+      // the capsule axis (not along n_p: that is where the surface line lies).
+      const T kappa = std::abs(T(2) * shape.half_height * axis_dot_n);
+      if (kappa < T(0.02) && std::abs(axis_dot_n) < T(1)) {
+        const Vec3<T> across = n_p - axis_dot_n * axis;
+        const T length = across.norm();
+        // A zero `across` needs n_p along the axis, which |â·n_p| < 1 excludes
+        // but for rounding; fall back to n_p rather than divide by zero.
+        const Vec3<T> w = length > T(0) ? Vec3<T>(across / length) : n_p;
+        out.count = 2;
+        out.on_shape[0] = a - shape.radius * w;
+        out.on_shape[1] = b - shape.radius * w;
+      } else {
+        // Standing or tilted: the lower end only (equal heights: a).
+        const Vec3<T> e = n_p.dot(b) < n_p.dot(a) ? b : a;
+        out.count = 1;
+        out.on_shape[0] = e - shape.radius * n_p;
+      }
+      break;
+    }
+    case ShapeType::kBox: {
+      // The face towards the plane: its axis k has the largest |m_k| of the
+      // plane normal in box coordinates (first index on ties), and it lies on
+      // the side −sign(m_k).
+      const Vec3<T> m = rotation.conjugate() * n_p;
+      int k = 0;
+      for (int i = 1; i < 3; ++i) {
+        if (std::abs(m[i]) > std::abs(m[k])) k = i;
+      }
+      const int u = k == 0 ? 1 : 0;
+      const int v = k == 2 ? 1 : 2;
+      const T face_side = m[k] > T(0) ? T(-1) : T(1);
+      // Polygon order (−,−), (+,−), (+,+), (−,+) in (u, v).
+      const T signs_u[4] = {T(-1), T(1), T(1), T(-1)};
+      const T signs_v[4] = {T(-1), T(-1), T(1), T(1)};
+      out.count = 4;
+      for (int j = 0; j < 4; ++j) {
+        Vec3<T> local;
+        local[k] = face_side * shape.half_extents[k];
+        local[u] = signs_u[j] * shape.half_extents[u];
+        local[v] = signs_v[j] * shape.half_extents[v];
+        out.on_shape[j] = centre + rotation * local;
+      }
+      break;
+    }
+    case ShapeType::kNone:
+    case ShapeType::kPlane:
+      throw std::invalid_argument("reference::PlaneContactCandidates: unsupported shape");
+  }
+  return out;
+}
+
+template <class T>
+class ContactConstraint {
+ public:
+  // Bodies body1 < body2 (scene indices) and their shapes; exactly one shape
+  // is a plane (the world checks the pair). μ = sqrt(μ1 μ2), e = max(e1, e2).
+  ContactConstraint(std::size_t body1, std::size_t body2, const ShapeSettings& shape1,
+                    const ShapeSettings& shape2)
+      : body1_(body1),
+        body2_(body2),
+        plane_is_body1_(shape1.type == ShapeType::kPlane),
+        plane_(MakeContactShape<T>(plane_is_body1_ ? shape1 : shape2)),
+        other_(MakeContactShape<T>(plane_is_body1_ ? shape2 : shape1)),
+        friction_(std::sqrt(T(shape1.friction) * T(shape2.friction))),
+        restitution_(std::max(T(shape1.restitution), T(shape2.restitution))) {
+    if (plane_.type != ShapeType::kPlane ||
+        (other_.type != ShapeType::kSphere && other_.type != ShapeType::kCapsule &&
+         other_.type != ShapeType::kBox)) {
+      throw std::invalid_argument(
+          "reference::ContactConstraint: only a plane with a sphere, capsule or box");
+    }
+  }
+
+  std::size_t body1() const { return body1_; }
+  std::size_t body2() const { return body2_; }
+
+  // Points and rows from the poses at the start of the substep and the
+  // velocities after its forces; motion1/2 give the gravity factors and forces
+  // of the restitution's Δv_f. Carries the last substep's impulses over.
+  void Setup(const Body<T>& body1, const BodyMotionSettings<T>& motion1, const Body<T>& body2,
+             const BodyMotionSettings<T>& motion2, T dt, const Vec3<T>& gravity,
+             const ContactSettings<T>& settings) {
+    // Last substep's manifold, for point matching and the friction carry-over.
+    const int old_count = count_;
+    const std::array<Vec3<T>, kMaxContactPoints> old_local1 = local1_;
+    const std::array<Vec3<T>, kMaxContactPoints> old_local2 = local2_;
+    std::array<T, kMaxContactPoints> old_lambda{};
+    for (int i = 0; i < kMaxContactPoints; ++i) old_lambda[i] = normal_[i].lambda;
+    const bool existed = old_count > 0;
+    const T old_t1 = tangent1_.lambda, old_t2 = tangent2_.lambda, old_a = angular_.lambda;
+
+    count_ = 0;
+    normal_direction_.setZero();
+    for (Row& row : normal_) row = Row{};
+    tangent1_ = Row{};
+    tangent2_ = Row{};
+    angular_ = Row{};
+    friction_active_ = false;
+
+    // ---- points
+    const Body<T>& plane_body = plane_is_body1_ ? body1 : body2;
+    const Body<T>& other_body = plane_is_body1_ ? body2 : body1;
+    const Quat<T> plane_rotation = plane_body.rotation * plane_.rotation;
+    const Vec3<T> n_p = plane_rotation * Vec3<T>::UnitY();
+    const Vec3<T> origin = plane_body.position + plane_body.rotation * plane_.position;
+    const PlaneCandidates<T> candidates = PlaneContactCandidates<T>(
+        n_p, other_, Vec3<T>(other_body.position + other_body.rotation * other_.position),
+        Quat<T>(other_body.rotation * other_.rotation));
+    std::array<T, kMaxContactPoints> phi{};
+    T deepest = std::numeric_limits<T>::infinity();
+    for (int j = 0; j < candidates.count; ++j) {
+      phi[j] = n_p.dot(candidates.on_shape[j] - origin);
+      deepest = std::min(deepest, phi[j]);
+    }
+    const T keep = settings.speculative_contact_distance + T(0.001);  // Jolt's 1 mm tolerance
+    if (!(deepest < settings.speculative_contact_distance)) return;  // no manifold this substep
+
+    normal_direction_ = plane_is_body1_ ? n_p : Vec3<T>(-n_p);
+    const Vec3<T>& n = normal_direction_;
+    for (int j = 0; j < candidates.count; ++j) {
+      if (!(phi[j] < keep)) continue;
+      const Vec3<T> on_shape = candidates.on_shape[j];
+      const Vec3<T> on_plane = on_shape - phi[j] * n_p;
+      point1_[count_] = plane_is_body1_ ? on_plane : on_shape;
+      point2_[count_] = plane_is_body1_ ? on_shape : on_plane;
+      ++count_;
+    }
+
+    // ---- normal rows, with the impulse of the matching old point
+    const Vec3<T> v_rel_linear = body2.LinearVelocity() - body1.LinearVelocity();
+    const Vec3<T> a_rel = Acceleration(body2, motion2, gravity) - Acceleration(body1, motion1, gravity);
+    const T gravity_dv = std::min(T(0), dt * a_rel.dot(n));  // Δv_f
+    for (int i = 0; i < count_; ++i) {
+      local1_[i] = body1.rotation.conjugate() * (point1_[i] - body1.position);
+      local2_[i] = body2.rotation.conjugate() * (point2_[i] - body2.position);
+      const Vec3<T> p = (point1_[i] + point2_[i]) / T(2);
+      const Vec3<T> r1 = p - body1.position;
+      const Vec3<T> r2 = p - body2.position;
+      Row& row = normal_[i];
+      row = LinearRow(body1, r1, body2, r2, n);
+      separation_[i] = (point2_[i] - point1_[i]).dot(n);
+      const T v_n = n.dot(v_rel_linear) + body2.AngularVelocity().cross(r2).dot(n) -
+                    body1.AngularVelocity().cross(r1).dot(n);
+      const T speculative_bias = std::max(T(0), separation_[i] / dt);
+      row.bias = speculative_bias;
+      if (restitution_ > T(0) && v_n < -settings.min_velocity_for_restitution &&
+          v_n < -speculative_bias) {
+        // The gap closes within this substep: bounce off the approach speed
+        // the bodies had before this substep's gravity and forces.
+        row.bias = restitution_ * (v_n - gravity_dv);
+      }
+      if (row.effective_mass != T(0)) {
+        for (int j = 0; j < old_count; ++j) {
+          if ((local1_[i] - old_local1[j]).squaredNorm() <= T(1e-4) &&
+              (local2_[i] - old_local2[j]).squaredNorm() <= T(1e-4)) {
+            row.lambda = old_lambda[j];
+            break;
+          }
+        }
+      }
+    }
+
+    // ---- friction at one anchor (snapshot model)
+    if (friction_ > T(0)) {
+      friction_active_ = true;
+      anchor_.setZero();
+      for (int i = 0; i < count_; ++i) anchor_ += (point1_[i] + point2_[i]) / T(2);
+      anchor_ /= T(count_);
+      for (int i = 0; i < count_; ++i) {
+        const Vec3<T> offset = (point1_[i] + point2_[i]) / T(2) - anchor_;
+        distance_[i] = (offset - offset.dot(n) * n).norm();
+      }
+      const Vec3<T> r1 = anchor_ - body1.position;
+      const Vec3<T> r2 = anchor_ - body2.position;
+      tangent1_direction_ = NormalizedPerpendicular(n);
+      tangent2_direction_ = n.cross(tangent1_direction_);
+      tangent1_ = LinearRow(body1, r1, body2, r2, tangent1_direction_);
+      tangent2_ = LinearRow(body1, r1, body2, r2, tangent2_direction_);
+      if (count_ >= 2) angular_ = AngularRow(body1, body2, n);
+      // Per manifold, whatever the points did: Jolt inherits them when the
+      // manifold existed last substep (the tangents are rebuilt from n).
+      if (existed) {
+        if (tangent1_.effective_mass != T(0)) tangent1_.lambda = old_t1;
+        if (tangent2_.effective_mass != T(0)) tangent2_.lambda = old_t2;
+        if (angular_.effective_mass != T(0)) angular_.lambda = old_a;
+      }
+    }
+  }
+
+  // Λ ← ρΛ and applied: t1, t2, angular, then the normals in point order.
+  void WarmStart(Body<T>& body1, Body<T>& body2, T warm_start_ratio) {
+    if (count_ == 0) return;
+    Velocities vel = Velocities::Read(body1, body2);
+    for (Row* row : {&tangent1_, &tangent2_, &angular_}) {
+      row->lambda *= warm_start_ratio;
+      Apply(*row, row->lambda, vel);
+    }
+    for (int i = 0; i < count_; ++i) {
+      normal_[i].lambda *= warm_start_ratio;
+      Apply(normal_[i], normal_[i].lambda, vel);
+    }
+    vel.Write(body1, body2);
+  }
+
+  // One Gauss-Seidel pass over the slot's rows; true iff any impulse changed.
+  bool SolveVelocity(Body<T>& body1, Body<T>& body2) {
+    if (count_ == 0) return false;
+    bool applied = false;
+    Velocities vel = Velocities::Read(body1, body2);
+    if (friction_active_) {
+      // Limits from the normal impulses so far (previous pass or warm start):
+      // a new contact has none in its first pass.
+      T normal_sum = T(0), moment_sum = T(0);
+      for (int i = 0; i < count_; ++i) {
+        normal_sum += normal_[i].lambda;
+        moment_sum += distance_[i] * normal_[i].lambda;
+      }
+      const T max_linear = friction_ * normal_sum;
+      const T max_angular = friction_ * moment_sum;
+      // Both tangent rows from the same velocities, then clamped together to a
+      // circle, so the friction force does not depend on the tangent basis.
+      T new1 = tangent1_.lambda + tangent1_.effective_mass * (-RowVelocity(tangent1_, vel));
+      T new2 = tangent2_.lambda + tangent2_.effective_mass * (-RowVelocity(tangent2_, vel));
+      const T length_squared = new1 * new1 + new2 * new2;
+      if (length_squared > max_linear * max_linear) {
+        const T scale = max_linear / std::sqrt(length_squared);
+        new1 *= scale;
+        new2 *= scale;
+      }
+      applied |= Apply(tangent1_, new1 - tangent1_.lambda, vel);
+      tangent1_.lambda = new1;
+      applied |= Apply(tangent2_, new2 - tangent2_.lambda, vel);
+      tangent2_.lambda = new2;
+      if (angular_.effective_mass != T(0)) {
+        const T unclamped = angular_.lambda + angular_.effective_mass * (-RowVelocity(angular_, vel));
+        const T new_a = std::min(std::max(unclamped, -max_angular), max_angular);
+        applied |= Apply(angular_, new_a - angular_.lambda, vel);
+        angular_.lambda = new_a;
+      }
+    }
+    // Normals last: the rows solved last dominate, and non-penetration matters most.
+    for (int i = 0; i < count_; ++i) {
+      Row& row = normal_[i];
+      const T unclamped = row.lambda + row.effective_mass * (-RowVelocity(row, vel) - row.bias);
+      const T new_lambda = std::max(T(0), unclamped);
+      applied |= Apply(row, new_lambda - row.lambda, vel);
+      row.lambda = new_lambda;
+    }
+    vel.Write(body1, body2);
+    return applied;
+  }
+
+  // One Baumgarte pass over the points; true iff a body was moved.
+  bool SolvePosition(Body<T>& body1, Body<T>& body2, T baumgarte, T slop, T max_penetration) {
+    if (count_ == 0) return false;
+    // The points move with the transforms of when this slot's pass starts; the
+    // lever arms reach the centres of mass as earlier points left them.
+    const Vec3<T> x1 = body1.position, x2 = body2.position;
+    const Quat<T> q1 = body1.rotation, q2 = body2.rotation;
+    const Vec3<T>& n = normal_direction_;
+    bool moved = false;
+    for (int i = 0; i < count_; ++i) {
+      const Vec3<T> p1 = x1 + q1 * local1_[i];
+      const Vec3<T> p2 = x2 + q2 * local2_[i];
+      // Penetration up to the slop is left alone; a step corrects at most
+      // max_penetration of it.
+      const T c = std::max((p2 - p1).dot(n) + slop, -max_penetration);
+      if (!(c < T(0))) continue;
+      const Vec3<T> p = (p1 + p2) / T(2);
+      const Row row = LinearRow(body1, p - body1.position, body2, p - body2.position, n);
+      if (row.effective_mass == T(0)) continue;
+      const T lambda = -baumgarte * c * row.effective_mass;  // −β C / K
+      if (body1.IsDynamic()) {
+        body1.SubPositionStep((lambda * body1.inv_mass) * n);
+        body1.SubRotationStep(lambda * row.inv_i1_angular1);
+      }
+      if (body2.IsDynamic()) {
+        body2.AddPositionStep((lambda * body2.inv_mass) * n);
+        body2.AddRotationStep(lambda * row.inv_i2_angular2);
+      }
+      moved = true;
+    }
+    return moved;
+  }
+
+  // ---- read-only views (this substep's manifold), for tests
+  bool Exists() const { return count_ > 0; }
+  int PointCount() const { return count_; }
+  const Vec3<T>& Normal() const { return normal_direction_; }  // body 1 to body 2; 0 if none
+  T NormalImpulse(int k) const { return normal_.at(std::size_t(k)).lambda; }
+  const Vec3<T>& Point1(int k) const { return point1_.at(std::size_t(k)); }  // world, setup
+  const Vec3<T>& Point2(int k) const { return point2_.at(std::size_t(k)); }
+  T Separation(int k) const { return separation_.at(std::size_t(k)); }  // (p2 − p1)·n at setup
+  T FrictionImpulse1() const { return tangent1_.lambda; }  // along Tangent1()
+  T FrictionImpulse2() const { return tangent2_.lambda; }
+  T AngularFrictionImpulse() const { return angular_.lambda; }  // about Normal()
+  const Vec3<T>& Tangent1() const { return tangent1_direction_; }
+  const Vec3<T>& Tangent2() const { return tangent2_direction_; }
+  T Friction() const { return friction_; }        // sqrt(μ1 μ2)
+  T Restitution() const { return restitution_; }  // max(e1, e2)
+
+ private:
+  // One row: ċ = axis·(v2 − v1) + angular2·ω2 − angular1·ω1.
+  struct Row {
+    Vec3<T> axis = Vec3<T>::Zero();  // zero for the angular row
+    Vec3<T> angular1 = Vec3<T>::Zero();
+    Vec3<T> angular2 = Vec3<T>::Zero();
+    Vec3<T> inv_i1_angular1 = Vec3<T>::Zero();
+    Vec3<T> inv_i2_angular2 = Vec3<T>::Zero();
+    T inv_mass1 = T(0);  // dynamic bodies only
+    T inv_mass2 = T(0);
+    T effective_mass = T(0);  // 0: inactive
+    T bias = T(0);
+    T lambda = T(0);
+  };
+
+  static std::array<Vec3<T>, kMaxContactPoints> ZeroPoints() {
+    std::array<Vec3<T>, kMaxContactPoints> points;
+    points.fill(Vec3<T>::Zero());
+    return points;
+  }
+
+  // Both bodies' velocities while a slot is solved (jolt-contacts.md §5.2).
+  struct Velocities {
+    Vec3<T> v1, w1, v2, w2;
+    static Velocities Read(const Body<T>& body1, const Body<T>& body2) {
+      return {body1.LinearVelocity(), body1.AngularVelocity(), body2.LinearVelocity(),
+              body2.AngularVelocity()};
+    }
+    void Write(Body<T>& body1, Body<T>& body2) const {
+      if (body1.IsDynamic()) {
+        body1.linear_velocity = body1.LockTranslation(v1);
+        body1.angular_velocity = w1;
+      }
+      if (body2.IsDynamic()) {
+        body2.linear_velocity = body2.LockTranslation(v2);
+        body2.angular_velocity = w2;
+      }
+    }
+  };
+
+  // γ g + m⁻¹ F for a dynamic body; a static or kinematic body gets nothing
+  // from forces (docs/contacts.md: a kinematic body's gravity factor counts 0).
+  static Vec3<T> Acceleration(const Body<T>& body, const BodyMotionSettings<T>& motion,
+                              const Vec3<T>& gravity) {
+    if (!body.IsDynamic()) return Vec3<T>::Zero();
+    return motion.gravity_factor * gravity + body.inv_mass * motion.force;
+  }
+
+  // A linear row along unit `axis` with levers r1, r2 (from the centres of
+  // mass). A static body's velocity is zero, so its levers are left zero; only
+  // dynamic bodies have mass here.
+  static Row LinearRow(const Body<T>& body1, const Vec3<T>& r1, const Body<T>& body2,
+                       const Vec3<T>& r2, const Vec3<T>& axis) {
+    Row row;
+    row.axis = axis;
+    T k = T(0);
+    if (!body1.IsStatic()) row.angular1 = r1.cross(axis);
+    if (body1.IsDynamic()) {
+      row.inv_mass1 = body1.inv_mass;
+      row.inv_i1_angular1 = body1.MultiplyInverseInertia(row.angular1);
+      k += body1.inv_mass + row.angular1.dot(row.inv_i1_angular1);
+    }
+    if (!body2.IsStatic()) row.angular2 = r2.cross(axis);
+    if (body2.IsDynamic()) {
+      row.inv_mass2 = body2.inv_mass;
+      row.inv_i2_angular2 = body2.MultiplyInverseInertia(row.angular2);
+      k += body2.inv_mass + row.angular2.dot(row.inv_i2_angular2);
+    }
+    row.effective_mass = k == T(0) ? T(0) : T(1) / k;
+    return row;
+  }
+
+  // The angular friction row about n: ċ = (ω2 − ω1)·n.
+  static Row AngularRow(const Body<T>& body1, const Body<T>& body2, const Vec3<T>& n) {
+    Row row;
+    T k = T(0);
+    if (!body1.IsStatic()) row.angular1 = n;
+    if (body1.IsDynamic()) {
+      row.inv_i1_angular1 = body1.MultiplyInverseInertia(n);
+      k += n.dot(row.inv_i1_angular1);
+    }
+    if (!body2.IsStatic()) row.angular2 = n;
+    if (body2.IsDynamic()) {
+      row.inv_i2_angular2 = body2.MultiplyInverseInertia(n);
+      k += n.dot(row.inv_i2_angular2);
+    }
+    row.effective_mass = k == T(0) ? T(0) : T(1) / k;
+    return row;
+  }
+
+  static T RowVelocity(const Row& row, const Velocities& vel) {
+    return row.axis.dot(vel.v2 - vel.v1) + row.angular2.dot(vel.w2) - row.angular1.dot(vel.w1);
+  }
+
+  // Applies impulse `delta` of `row` to the velocities; true iff delta != 0.
+  static bool Apply(const Row& row, T delta, Velocities& vel) {
+    vel.v1 -= (delta * row.inv_mass1) * row.axis;
+    vel.w1 -= delta * row.inv_i1_angular1;
+    vel.v2 += (delta * row.inv_mass2) * row.axis;
+    vel.w2 += delta * row.inv_i2_angular2;
+    return delta != T(0);
+  }
+
+  std::size_t body1_, body2_;
+  bool plane_is_body1_;
+  ContactShape<T> plane_;
+  ContactShape<T> other_;
+  T friction_;     // μ = sqrt(μ1 μ2)
+  T restitution_;  // e = max(e1, e2)
+
+  // This substep's manifold (kept until the next Setup: matching reads it).
+  int count_ = 0;
+  Vec3<T> normal_direction_ = Vec3<T>::Zero();
+  // (Eigen leaves a default-constructed vector uninitialised: zeroed here.)
+  std::array<Vec3<T>, kMaxContactPoints> point1_ = ZeroPoints();  // world, at setup
+  std::array<Vec3<T>, kMaxContactPoints> point2_ = ZeroPoints();
+  std::array<Vec3<T>, kMaxContactPoints> local1_ = ZeroPoints();  // body 1 COM frame
+  std::array<Vec3<T>, kMaxContactPoints> local2_ = ZeroPoints();  // body 2 COM frame
+  std::array<T, kMaxContactPoints> separation_{};
+  std::array<T, kMaxContactPoints> distance_{};  // d_i from the friction anchor
+  std::array<Row, kMaxContactPoints> normal_{};
+  bool friction_active_ = false;
+  Vec3<T> anchor_ = Vec3<T>::Zero();
+  Vec3<T> tangent1_direction_ = Vec3<T>::Zero();
+  Vec3<T> tangent2_direction_ = Vec3<T>::Zero();
+  Row tangent1_;
+  Row tangent2_;
+  Row angular_;
+};
+
+}  // namespace manyworlds::reference

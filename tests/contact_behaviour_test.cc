@@ -1,0 +1,643 @@
+// The physics of contacts (docs/contacts.md) as the bodies show it, on every
+// stepper: the scalar reference (reference/world.h) in float and double, and
+// the SIMD batch on every Highway target this CPU runs (one test instance per
+// stepper, named after it; see tests/stepper_adapters.h; the batch runs 20
+// identical worlds and checks bitwise that all agree with world 0, which the
+// assertions read). Jolt's own contact tests (../shared/docs/jolt-contacts.md
+// §12) where they apply to a plane, and physics Jolt does not test (an
+// incline, a rolling sphere, resting capsules and boxes).
+//
+// The manifolds of these scenes (point counts and points, normal impulses,
+// slot order and filter) and the scenes the reference refuses are checked on
+// the reference's contact accessors in tests/reference_contact_test.cc; the
+// scenes are shared (tests/contact_test_scenes.h).
+//
+// Every expectation comes from the physics or from the spec's formulas, never
+// from running this code; each tolerance says why it is what it is. A
+// tolerance that is a rounding bound of the precision holds the batch (float)
+// to the float bound. Measured worst deviations (worst relative to the bound
+// over a test's cases) are printed per stepper as "[measured] ..." lines at the
+// end of each test (and recorded in the XML output).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <string>
+#include <utility>
+
+#include "manyworlds/batch.h"
+#include "manyworlds/scene.h"
+#include "reference/math.h"
+#include "tests/contact_test_scenes.h"
+#include "tests/stepper_adapters.h"
+
+namespace manyworlds::stepper_test {
+namespace {
+
+using namespace ::manyworlds::contact_test;  // NOLINT(google-build-using-namespace)
+
+// ------------------------------------------------------------ measurements
+
+// Worst deviation of each quantity of the running test over its cases (worst
+// relative to its bound), with that bound; printed and recorded when the test
+// ends.
+class Measurements {
+ public:
+  static Measurements& Get() {
+    static Measurements measurements;
+    return measurements;
+  }
+  void Clear() { worst_.clear(); }
+  void Record(const std::string& what, double value, double bound) {
+    auto [it, inserted] = worst_.try_emplace(what, value, bound);
+    if (!inserted && !(it->second.first / it->second.second >= value / bound)) {
+      it->second = {value, bound};
+    }
+  }
+  void Print(const std::string& stepper) const {
+    for (const auto& [what, entry] : worst_) {
+      std::printf("  [measured] %s %s = %.3g (bound %.3g)\n", stepper.c_str(), what.c_str(),
+                  entry.first, entry.second);
+      ::testing::Test::RecordProperty(what, std::to_string(entry.first));
+    }
+  }
+
+ private:
+  std::map<std::string, std::pair<double, double>> worst_;
+};
+
+// A measured quantity that a test bounds itself (EXPECT_GE etc.).
+void Report(const std::string& what, double value, double bound) {
+  Measurements::Get().Record(what, value, bound);
+}
+
+// value ≤ bound (EXPECT_LE), recorded under `what`.
+::testing::AssertionResult AtMost(const std::string& what, double value, double bound) {
+  Measurements::Get().Record(what, value, bound);
+  if (value <= bound) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << what << ": " << value << " > " << bound;
+}
+// |actual − expected| ≤ tolerance (EXPECT_NEAR), the distance recorded under `what`.
+::testing::AssertionResult Near(const std::string& what, double actual, double expected,
+                                double tolerance) {
+  const double distance = std::abs(actual - expected);
+  Measurements::Get().Record(what, distance, tolerance);
+  if (distance <= tolerance) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << what << ": actual " << actual << ", expected "
+                                       << expected << ", distance " << distance << " > "
+                                       << tolerance;
+}
+#define EXPECT_AT_MOST(what, value, bound) EXPECT_TRUE(AtMost((what), (value), (bound)))
+#define EXPECT_MEASURED_NEAR(what, actual, expected, tolerance) \
+  EXPECT_TRUE(Near((what), (actual), (expected), (tolerance)))
+
+// ---------------------------------------------------------------- helpers
+
+// Angle (rad) of the rotation between two unit quaternions, from the relative
+// rotation's components (acos of a dot product near 1 would be good to only
+// ~1e-3 rad in float).
+double AngleBetween(const Quatd& a, const Quatd& b) {
+  const Quatd relative = a.conjugate() * b;
+  return 2.0 * std::atan2(relative.vec().norm(), std::abs(relative.w()));
+}
+
+// Position tolerance of a body falling ~5 m in T: float spacing at 5 m is
+// 4.8e-7, and ~120 rounded additions may stack to ~3e-5 at worst; double is
+// exact to far below 1e-9. The batch is float.
+double FallTolerance(const StepperKind& kind) { return kind.is_double ? 1e-9 : 3e-5; }
+
+// Parameter: the stepper (reference float / double, batch per target).
+class ContactBehaviourTest : public ::testing::TestWithParam<StepperKind> {
+ protected:
+  void SetUp() override { Measurements::Get().Clear(); }
+  void TearDown() override { Measurements::Get().Print(GetParam().name); }
+  std::unique_ptr<Stepper> Make(const Scene& scene) const { return GetParam().make(scene); }
+};
+
+// ------------------------------------------------ Jolt: CollisionElastic (×3)
+
+// A unit sphere, e = 1, dropped so it reaches y = 1 − 1e-4 after 1 s: before
+// the hit its velocity is g t; the hit step reflects it with no gravity gained
+// (the Δv_f compensation); 1 s later it is back where it started, at rest.
+void CollisionElasticCase(const StepperKind& kind, double delta_time, int substeps,
+                          bool gravity_as_force) {
+  SCOPED_TRACE("delta_time " + std::to_string(delta_time) + ", substeps " +
+               std::to_string(substeps) + (gravity_as_force ? ", gravity as a force" : ""));
+  const ElasticDrop drop = MakeElasticDrop(delta_time, substeps);
+  StepSettings settings = drop.settings;
+  const double g = drop.g;
+  const std::unique_ptr<Stepper> world = kind.make(drop.scene);
+  const double start = world->Position(1).y();  // start_y rounded to float
+  const double hit_y = start + PredictFall(-g, drop.substep, 1.0);
+  if (gravity_as_force) settings.gravity = {0.0f, 0.0f, 0.0f};
+  const auto step = [&](const StepSettings& s) {
+    if (gravity_as_force) world->SetForce(1, Vec3d(0.0, -drop.mass * g, 0.0));
+    world->Step(s);
+  };
+  const auto simulate = [&](double seconds) {
+    const int steps = int(std::lround(seconds / delta_time));
+    for (int i = 0; i < steps; ++i) step(settings);
+  };
+
+  simulate(1.0);
+  EXPECT_AT_MOST("fall_position", Distance(world->Position(1), 0.0, hit_y, 0.0),
+                 FallTolerance(kind));
+  // Not yet hit: free fall (Jolt's 1e-4; float velocity ~10 m/s is good to 1e-5).
+  EXPECT_AT_MOST("fall_velocity", Distance(world->LinearVelocity(1), 0.0, -g, 0.0), 1e-4);
+
+  step(SingleStep(settings));
+  // Reflected, without the gravity of the hit substep (Jolt's 1e-4).
+  EXPECT_AT_MOST("reflected_velocity", Distance(world->LinearVelocity(1), 0.0, g, 0.0), 1e-4);
+
+  simulate(1.0);
+  // Symplectic Euler is time-symmetric here: the rise retraces the fall.
+  EXPECT_AT_MOST("return_position", Distance(world->Position(1), 0.0, start, 0.0),
+                 FallTolerance(kind));
+  EXPECT_AT_MOST("return_velocity", Distance(world->LinearVelocity(1), 0.0, 0.0, 0.0), 1e-4);
+}
+
+TEST_P(ContactBehaviourTest, CollisionElastic) {
+  CollisionElasticCase(GetParam(), 1.0 / 60.0, 1, false);
+  CollisionElasticCase(GetParam(), 2.0 / 60.0, 2, false);
+  CollisionElasticCase(GetParam(), 4.0 / 60.0, 4, false);
+  CollisionElasticCase(GetParam(), 1.0 / 60.0, 1, true);
+  CollisionElasticCase(GetParam(), 4.0 / 60.0, 4, true);
+}
+
+// ---------------------------------------------- Jolt: CollisionInelastic (×3)
+
+// e = 0: all velocity is lost in the hit and the sphere stays where it hit.
+void CollisionInelasticCase(const StepperKind& kind, double delta_time, int substeps) {
+  SCOPED_TRACE("delta_time " + std::to_string(delta_time) + ", substeps " +
+               std::to_string(substeps));
+  const std::unique_ptr<Stepper> world = kind.make(InelasticDropScene(delta_time, substeps));
+  const StepSettings settings = Settings(delta_time, substeps);
+
+  Simulate(*world, settings, 1.0);
+  world->Step(SingleStep(settings));
+  // Jolt's tolerances (1e-4).
+  EXPECT_AT_MOST("hit_velocity", Distance(world->LinearVelocity(1), 0.0, 0.0, 0.0), 1e-4);
+  EXPECT_AT_MOST("hit_position", Distance(world->Position(1), 0.0, kInelasticHitY, 0.0), 1e-4);
+
+  Simulate(*world, settings, 1.0);
+  EXPECT_AT_MOST("rest_velocity", Distance(world->LinearVelocity(1), 0.0, 0.0, 0.0), 1e-4);
+  EXPECT_AT_MOST("rest_position", Distance(world->Position(1), 0.0, kInelasticHitY, 0.0), 1e-4);
+}
+
+TEST_P(ContactBehaviourTest, CollisionInelastic) {
+  CollisionInelasticCase(GetParam(), 1.0 / 60.0, 1);
+  CollisionInelasticCase(GetParam(), 2.0 / 60.0, 2);
+  CollisionInelasticCase(GetParam(), 4.0 / 60.0, 4);
+}
+
+// ------------------------------------------ Jolt: PenetrationSlop1/2/3 (×3)
+
+// A box of half extent 1 placed `depth` into the floor, 1 s: up to the slop a
+// penetration is left alone (the box does not move at all); beyond it the
+// position phase pushes the box out to exactly the slop.
+void PenetrationSlopCase(const StepperKind& kind, double depth, double expected_depth,
+                         double delta_time, int substeps) {
+  SCOPED_TRACE("depth " + std::to_string(depth) + ", substeps " + std::to_string(substeps));
+  const std::unique_ptr<Stepper> world = kind.make(SunkBoxScene(depth));
+  Simulate(*world, Settings(delta_time, substeps), 1.0);
+  // Jolt's tolerances: position 1e-5; velocities "zero" (Jolt's default 1e-6;
+  // here 1e-5: four corner rows share the weight by Gauss-Seidel, so the
+  // residual is a few float roundings of the 0.16 m/s gravity step).
+  EXPECT_AT_MOST("position", Distance(world->Position(1), 0.0, 1.0 - expected_depth, 0.0), 1e-5);
+  EXPECT_AT_MOST("linear_velocity", Distance(world->LinearVelocity(1), 0.0, 0.0, 0.0), 1e-5);
+  EXPECT_AT_MOST("angular_velocity", Distance(world->AngularVelocity(1), 0.0, 0.0, 0.0), 1e-5);
+}
+
+TEST_P(ContactBehaviourTest, PenetrationSlop) {
+  for (const auto& [delta_time, substeps] :
+       {std::pair{1.0 / 60.0, 1}, std::pair{2.0 / 60.0, 2}, std::pair{4.0 / 60.0, 4}}) {
+    PenetrationSlopCase(GetParam(), kSlop, kSlop, delta_time, substeps);              // 1
+    PenetrationSlopCase(GetParam(), 2.0 * kSlop, kSlop, delta_time, substeps);        // 2
+    PenetrationSlopCase(GetParam(), 0.1 * kSlop, 0.1 * kSlop, delta_time, substeps);  // 3
+  }
+}
+
+// --------------------------------- speculative contacts (Jolt, zero gravity)
+
+// 1.1 × the speculative distance above, falling 1 m per step: no contact at
+// the start of step 1, so both tunnel 1 m in; step 2 finds them.
+TEST_P(ContactBehaviourTest, OutsideOfSpeculativeContactDistance) {
+  const double gap = 1.1 * kSpeculative, velocity = -1.0 / kDt;
+  const std::unique_ptr<Stepper> world = Make(BoxAndSphere(gap, velocity));
+  world->Step(ZeroGravity());
+  // Unimpeded (Jolt 1e-6; float at 1 m is good to 1e-7 per operation).
+  EXPECT_AT_MOST("box_tunnelled", Distance(world->Position(1), 0.0, 1.0 + gap - 1.0, 0.0), 1e-6);
+  EXPECT_AT_MOST("sphere_tunnelled", Distance(world->Position(2), 3.0, 1.0 + gap - 1.0, 0.0),
+                 1e-6);
+
+  world->Step(ZeroGravity());
+  // e = 0 and already penetrating: the approach is stopped dead.
+  EXPECT_AT_MOST("box_velocity", std::abs(world->LinearVelocity(1).y()), 1e-4);
+  EXPECT_AT_MOST("sphere_velocity", std::abs(world->LinearVelocity(2).y()), 1e-4);
+  // The sphere (one row through its centre, K = 1/m) is pushed out by the
+  // position phase: C = max(s + slop, −0.2) = −0.2 in both passes, each moving
+  // it β·0.2 = 0.04 m: 0.08 m in all (float: 1e-6 at ~0.1 m).
+  EXPECT_MEASURED_NEAR("sphere_pushed_out", world->Position(2).y(), gap + 0.08, 1e-6);
+}
+
+// 0.9 × the speculative distance above, falling 1 m per step, e = 0: the
+// speculative contact lets it close the gap exactly (v = −gap/dt) and land on
+// the floor; the next step it rests.
+TEST_P(ContactBehaviourTest, InsideSpeculativeContactDistanceNoRestitution) {
+  const double gap = 0.9 * kSpeculative, velocity = -1.0 / kDt;
+  const std::unique_ptr<Stepper> world = Make(BoxAndSphere(gap, velocity));
+  const std::size_t box = 1, sphere = 2;
+  world->Step(ZeroGravity());
+  // Jolt's tolerances: box 1e-3 / 0.05 (four corner rows by Gauss-Seidel),
+  // sphere 1e-6 / 1e-4 (one row).
+  EXPECT_AT_MOST("box_position_1", Distance(world->Position(box), 0.0, 1.0, 0.0), 1e-3);
+  EXPECT_AT_MOST("box_velocity_1", Distance(world->LinearVelocity(box), 0.0, -gap / kDt, 0.0),
+                 0.05);
+  EXPECT_AT_MOST("box_angular_velocity_1",
+                 Distance(world->AngularVelocity(box), 0.0, 0.0, 0.0), 0.05);
+  EXPECT_AT_MOST("sphere_position_1", Distance(world->Position(sphere), 3.0, 1.0, 0.0), 1e-6);
+  EXPECT_AT_MOST("sphere_velocity_1",
+                 Distance(world->LinearVelocity(sphere), 0.0, -gap / kDt, 0.0), 1e-4);
+  EXPECT_AT_MOST("sphere_angular_velocity_1",
+                 Distance(world->AngularVelocity(sphere), 0.0, 0.0, 0.0), 1e-6);
+
+  world->Step(ZeroGravity());
+  EXPECT_AT_MOST("box_position_2", Distance(world->Position(box), 0.0, 1.0, 0.0), 1e-3);
+  EXPECT_AT_MOST("box_velocity_2", Distance(world->LinearVelocity(box), 0.0, 0.0, 0.0), 0.05);
+  EXPECT_AT_MOST("box_angular_velocity_2",
+                 Distance(world->AngularVelocity(box), 0.0, 0.0, 0.0), 0.05);
+  EXPECT_AT_MOST("sphere_position_2", Distance(world->Position(sphere), 3.0, 1.0, 0.0), 1e-4);
+  EXPECT_AT_MOST("sphere_velocity_2", Distance(world->LinearVelocity(sphere), 0.0, 0.0, 0.0),
+                 1e-4);
+  EXPECT_AT_MOST("sphere_angular_velocity_2",
+                 Distance(world->AngularVelocity(sphere), 0.0, 0.0, 0.0), 1e-6);
+}
+
+// The same with e = 1: the bounce is decided at setup from the current
+// position, so the bodies travel the gap for free and leave from where they
+// started, at the reflected velocity.
+TEST_P(ContactBehaviourTest, InsideSpeculativeContactDistanceWithRestitution) {
+  const double gap = 0.9 * kSpeculative, velocity = -1.0 / kDt;
+  const std::unique_ptr<Stepper> world = Make(BoxAndSphere(gap, velocity, 1.0f));
+  const std::size_t box = 1, sphere = 2;
+  world->Step(ZeroGravity());
+  // Jolt's tolerances: box 0.01 / 0.1 / 0.02, sphere 1e-5 / 2e-4.
+  EXPECT_AT_MOST("box_position", Distance(world->Position(box), 0.0, 1.0 + gap + 1.0, 0.0),
+                 0.01);
+  EXPECT_AT_MOST("box_velocity", Distance(world->LinearVelocity(box), 0.0, -velocity, 0.0),
+                 0.1);
+  EXPECT_AT_MOST("box_angular_velocity",
+                 Distance(world->AngularVelocity(box), 0.0, 0.0, 0.0), 0.02);
+  EXPECT_AT_MOST("sphere_position",
+                 Distance(world->Position(sphere), 3.0, 1.0 + gap + 1.0, 0.0), 1e-5);
+  EXPECT_AT_MOST("sphere_velocity",
+                 Distance(world->LinearVelocity(sphere), 0.0, -velocity, 0.0), 2e-4);
+  EXPECT_AT_MOST("sphere_angular_velocity",
+                 Distance(world->AngularVelocity(sphere), 0.0, 0.0, 0.0), 1e-6);
+}
+
+// e = 1, no restitution threshold, approaching at 0.9·gap per step: the first
+// step's speculative row is slack (no impulse at all, the velocity bit for bit
+// unchanged); in the second the gap closes within the step and it bounces.
+TEST_P(ContactBehaviourTest, InsideSpeculativeContactDistanceWithRestitutionNoHit) {
+  const double gap = 0.9 * kSpeculative, velocity = -0.9 * gap / kDt;
+  const std::unique_ptr<Stepper> world = Make(BoxAndSphere(gap, velocity, 1.0f));
+  StepSettings settings = ZeroGravity();
+  settings.min_velocity_for_restitution = 0.0f;
+  const double before = world->LinearVelocity(2).y();
+  world->Step(settings);
+  EXPECT_EQ(world->LinearVelocity(2).y(), before);
+  world->Step(settings);
+  // Reflected: b = e·v_n, no forces to compensate (one row: rounding only).
+  EXPECT_MEASURED_NEAR("reflected_velocity", world->LinearVelocity(2).y(), -velocity, 1e-5);
+}
+
+// Moving away at 1 m per step from 0.9 × the speculative distance: contacts
+// are made (speculative), yet the bodies move unimpeded (bit for bit).
+TEST_P(ContactBehaviourTest, InsideSpeculativeContactDistanceMovingAway) {
+  const double gap = 0.9 * kSpeculative, velocity = 1.0 / kDt;
+  const std::unique_ptr<Stepper> world = Make(BoxAndSphere(gap, velocity));
+  const Vec3d box_velocity = world->LinearVelocity(1);
+  const Vec3d sphere_velocity = world->LinearVelocity(2);
+  world->Step(ZeroGravity());
+  EXPECT_EQ(world->LinearVelocity(1), box_velocity);
+  EXPECT_EQ(world->LinearVelocity(2), sphere_velocity);
+  EXPECT_EQ(world->AngularVelocity(1), Vec3d::Zero());
+  EXPECT_AT_MOST("box_position", Distance(world->Position(1), 0.0, 1.0 + gap + 1.0, 0.0), 1e-6);
+  EXPECT_AT_MOST("sphere_position", Distance(world->Position(2), 3.0, 1.0 + gap + 1.0, 0.0),
+                 1e-6);
+}
+
+// --------------------------------------------- restitution threshold, slop
+
+// Touching the floor, e = 1, zero gravity: an approach of 0.9 m/s is below
+// min_velocity_for_restitution (1 m/s) and is stopped; 1.1 m/s bounces back.
+TEST_P(ContactBehaviourTest, MinVelocityForRestitution) {
+  for (const double speed : {0.9, 1.1}) {
+    SCOPED_TRACE(speed);
+    Scene scene;
+    scene.AddBody(Floor(0.2f, 1.0f));
+    BodySettings sphere = Sphere(1.0f, {0.0f, 1.0f, 0.0f});
+    sphere.linear_velocity = {0.0f, float(-speed), 0.0f};
+    scene.AddBody(sphere);
+    const std::unique_ptr<Stepper> world = Make(scene);
+    world->Step(ZeroGravity());
+    const double expected = speed > 1.0 ? speed : 0.0;
+    EXPECT_MEASURED_NEAR(speed > 1.0 ? "bounced_velocity" : "stopped_velocity",
+                         world->LinearVelocity(1).y(), expected, 1e-6);
+  }
+}
+
+// Zero gravity, at rest: a sphere 15 mm in (within the slop) is left exactly
+// where it is; one 0.5 m in rises 2 passes × β × max_penetration = 0.08 m in
+// one step, with its velocity untouched (the position phase moves poses only).
+TEST_P(ContactBehaviourTest, PositionPhaseSlopAndMaxPenetration) {
+  for (const double depth : {0.015, 0.5}) {
+    SCOPED_TRACE(depth);
+    Scene scene;
+    scene.AddBody(Floor());
+    scene.AddBody(Sphere(1.0f, {0.0f, float(1.0 - depth), 0.0f}));
+    const std::unique_ptr<Stepper> world = Make(scene);
+    const Vec3d start = world->Position(1);
+    world->Step(ZeroGravity());
+    if (depth < kSlop) {
+      EXPECT_EQ(world->Position(1), start);
+    } else {
+      EXPECT_MEASURED_NEAR("pushed_out", world->Position(1).y(), 1.0 - depth + 0.08, 1e-6);
+    }
+    EXPECT_EQ(world->LinearVelocity(1), Vec3d::Zero());
+    EXPECT_EQ(world->AngularVelocity(1), Vec3d::Zero());
+  }
+}
+
+// ----------------------------------- Jolt: ActivationDeactivation (no sleep)
+
+// A box of half 0.5 dropped from y = 5 comes to rest on its face at y = 0.5:
+// Jolt's check is within 1.1·slop after 5 s. The landing may sink it up to
+// the slop (never pushed out further), it never floats above the floor.
+TEST_P(ContactBehaviourTest, BoxDroppedComesToRest) {
+  const std::unique_ptr<Stepper> world = Make(DroppedBoxScene());
+  Simulate(*world, Settings(), 5.0);
+  const double y = world->Position(1).y();
+  EXPECT_AT_MOST("position", Distance(world->Position(1), 0.0, 0.5, 0.0), 1.1 * kSlop);
+  EXPECT_GE(y, 0.5 - kSlop - 1e-4);  // 0.1 mm for convergence
+  EXPECT_LE(y, 0.5 + 1e-6);
+  Report("sunk", 0.5 - y, kSlop + 1e-4);
+  Report("floating", y - 0.5, 1e-6);
+  // At rest (no sleeping: residuals of the last Gauss-Seidel pass only).
+  EXPECT_AT_MOST("linear_velocity", Distance(world->LinearVelocity(1), 0.0, 0.0, 0.0), 1e-4);
+  EXPECT_AT_MOST("angular_velocity", Distance(world->AngularVelocity(1), 0.0, 0.0, 0.0), 1e-4);
+  // Fell flat, stays flat (a symmetric landing).
+  EXPECT_AT_MOST("rotation", AngleBetween(world->Rotation(1), Quatd::Identity()), 1e-4);
+}
+
+// --------------------------------------------------------- Jolt: Friction
+
+// A box of half 1, 1 mm into the floor, sliding at 20 m/s in 12 directions,
+// μ = sqrt(0.9·0.8): compared after 60 steps with v −= μ g dt v̂ (stopping at
+// 0), x += v dt. Jolt's tolerances: position and rotation 1e-2, velocity 2e-2,
+// angular velocity 1e-2.
+TEST_P(ContactBehaviourTest, Friction) {
+  const double mu = std::sqrt(double(0.9f) * double(0.8f));
+  for (int degrees = 0; degrees < 360; degrees += 30) {
+    SCOPED_TRACE(degrees);
+    const double angle = degrees * kPiD / 180.0;
+    const double dx = std::cos(angle), dz = -std::sin(angle);  // rotation about Y of +X
+    Scene scene;
+    scene.AddBody(Floor(0.9f));
+    BodySettings box = Box({1.0f, 1.0f, 1.0f}, {0.0f, 0.999f, 0.0f});
+    box.rotation = RotationAbout({0, 1, 0}, angle);
+    box.linear_velocity = {float(20.0 * dx), 0.0f, float(20.0 * dz)};
+    box.shape.friction = 0.8f;
+    scene.AddBody(box);
+    const std::unique_ptr<Stepper> world = Make(scene);
+    const Quatd start_rotation = world->Rotation(1);
+    double speed = 20.0, distance = 0.0;
+    for (int i = 0; i < 60; ++i) {
+      world->Step(Settings());
+      speed = std::max(0.0, speed - mu * kG * kDt);
+      distance += speed * kDt;
+    }
+    EXPECT_AT_MOST("position", Distance(world->Position(1), distance * dx, 0.999, distance * dz),
+                   1e-2);
+    EXPECT_AT_MOST("rotation", AngleBetween(world->Rotation(1), start_rotation), 1e-2);
+    EXPECT_AT_MOST("linear_velocity",
+                   Distance(world->LinearVelocity(1), speed * dx, 0.0, speed * dz), 2e-2);
+    EXPECT_AT_MOST("angular_velocity", Distance(world->AngularVelocity(1), 0.0, 0.0, 0.0), 1e-2);
+  }
+}
+
+// ------------------------------------------------- Jolt: AngularFriction
+
+// A box of half 1 spinning at 10 rad/s about Y on the floor, μ = sqrt(0.2·0.3):
+// the angular row brakes it at dω/dt = I⁻¹ μ Σ d_i Λn_i / dt = I⁻¹ μ √2 m g
+// (corners √2 from the anchor; I = 2m/3), each step ω −= that·dt. Jolt's
+// tolerances: ω 5e-3, rotation 2e-3, position 1e-4, linear velocity 4e-4.
+TEST_P(ContactBehaviourTest, AngularFriction) {
+  const double mu = std::sqrt(double(0.2f) * double(0.3f));
+  const std::unique_ptr<Stepper> world = Make(SpinningBoxScene());
+  const double deceleration = 1.5 * std::sqrt(2.0) * mu * kG;  // (3/(2m)) μ √2 m g
+  double omega = 10.0, angle = 0.0;
+  for (int i = 0; i < 60; ++i) {
+    world->Step(Settings());
+    omega = std::max(0.0, omega - deceleration * kDt);
+    angle += omega * kDt;
+  }
+  EXPECT_GT(omega, 0.0);  // still spinning: the test sees the friction torque
+  EXPECT_AT_MOST("angular_velocity", Distance(world->AngularVelocity(1), 0.0, omega, 0.0), 5e-3);
+  const Quatd expected = reference::QuatFromAxisAngle<double>(Vec3d::UnitY(), angle);
+  EXPECT_AT_MOST("rotation", AngleBetween(world->Rotation(1), expected), 2e-3);
+  EXPECT_AT_MOST("position", Distance(world->Position(1), 0.0, 0.999, 0.0), 1e-4);
+  EXPECT_AT_MOST("linear_velocity", Distance(world->LinearVelocity(1), 0.0, 0.0, 0.0), 4e-4);
+}
+
+// ----------------------------------------------------------------- incline
+
+// A box of half 0.5 on a plane tilted by θ about Z (1 mm in, within the slop),
+// μ the same on both shapes. It rests iff tan θ ≤ μ; otherwise it slides down
+// at a = g (sin θ − μ cos θ), which after N steps of symplectic Euler is
+// d = a dt² N (N + 1) / 2. Runs 1 s (`iterations` velocity passes, warm start
+// on or off) and returns the distance travelled down the slope and the speed.
+struct Slide {
+  double distance;      // m, down the slope
+  double speed;         // m/s at the end
+  double speed_gained;  // m/s down the slope from step 10 to step 60
+};
+
+Slide InclineSlide(const StepperKind& kind, double theta, float mu, int iterations = 10,
+                   bool warm_start = true) {
+  const double n_x = -std::sin(theta), n_y = std::cos(theta);  // plane normal
+  const std::unique_ptr<Stepper> world = kind.make(InclineScene(theta, mu));
+  const Vec3d start = world->Position(1);
+  const StepSettings settings = InclineSettings(iterations, warm_start);
+  const auto velocity_down = [&] {
+    const Vec3d v = world->LinearVelocity(1);
+    return -(v.x() * std::cos(theta) + v.y() * std::sin(theta));
+  };
+  Simulate(*world, settings, 10 * kDt);
+  const double early = velocity_down();
+  Simulate(*world, settings, 50 * kDt);
+  const Vec3d moved = world->Position(1) - start;
+  // It neither leaves the plane nor sinks into it beyond what is left alone:
+  // with 10 passes the normal rows converge (0.1 mm); one pass a step does not
+  // converge, and the position phase lets up to the slop stand.
+  EXPECT_AT_MOST("off_plane", std::abs(moved.x() * n_x + moved.y() * n_y),
+                 iterations >= 10 ? 1e-4 : kSlop);
+  // Down the slope: −(cos θ, sin θ, 0).
+  return {-(moved.x() * std::cos(theta) + moved.y() * std::sin(theta)),
+          world->LinearVelocity(1).norm(), velocity_down() - early};
+}
+
+double SlideDistance(double theta, double mu, double seconds) {
+  const double a = kG * (std::sin(theta) - mu * std::cos(theta));
+  const double n = std::round(seconds / kDt);
+  return a * kDt * kDt * n * (n + 1.0) / 2.0;
+}
+
+TEST_P(ContactBehaviourTest, BlockOnIncline) {
+  const double deg = kPiD / 180.0;
+  // Rests: tan 20° = 0.364 < 0.5, tan 30° = 0.577 < 0.6. The sliding
+  // distances below are ≥ 0.1 m, so 0.1 mm separates resting from sliding;
+  // at rest the speed is the solver's residual (1e-5 m/s).
+  for (const auto& [degrees, mu] : {std::pair{20.0, 0.5f}, std::pair{30.0, 0.6f}}) {
+    SCOPED_TRACE(std::to_string(degrees) + " " + std::to_string(mu));
+    const Slide slide = InclineSlide(GetParam(), degrees * deg, mu);
+    EXPECT_AT_MOST("rest_distance", std::abs(slide.distance), 1e-4);
+    EXPECT_AT_MOST("rest_speed", slide.speed, 1e-5);
+  }
+  // Slides: tan 30° > 0.55 and > 0.3. Once sliding (steps 10 to 60) the
+  // speed grows by exactly a·50 dt: 1e-4 relative, so μ off by 2e-5 at 0.55
+  // would fail. The distance within 1%: the first step's friction limit comes
+  // from normal impulses not yet converged (they share the weight among four
+  // corners, Gauss-Seidel over 10 passes), which lags the slide by
+  // ~0.7 mm/s there; the continuous a t²/2 (1.7% short) would still fail.
+  for (const float mu : {0.55f, 0.3f}) {
+    SCOPED_TRACE(mu);
+    const Slide slide = InclineSlide(GetParam(), 30 * deg, mu);
+    const double a = kG * (std::sin(30 * deg) - double(mu) * std::cos(30 * deg));
+    EXPECT_MEASURED_NEAR("speed_gained", slide.speed_gained, a * 50 * kDt, 1e-4 * a * 50 * kDt);
+    const double expected = SlideDistance(30 * deg, mu, 1.0);
+    EXPECT_MEASURED_NEAR("slide_distance", slide.distance, expected, 1e-2 * expected);
+  }
+}
+
+// Warm starting with point matching is what lets one velocity pass hold a box
+// on an incline: the normal impulses carried over from the last step give the
+// friction its limit in the only pass. Without warm start the limit is zero in
+// that pass every step and the box slides as if frictionless, a = g sin θ.
+TEST_P(ContactBehaviourTest, WarmStartHoldsBoxOnInclineWithOnePass) {
+  const double theta = 20.0 * kPiD / 180.0;
+  const double frictionless = SlideDistance(theta, 0.0, 1.0);  // 1.71 m
+  // Held: the first step has nothing to carry over and slides freely
+  // (g sin θ dt² = 0.9 mm), the next few with the first step's unconverged
+  // impulses; 5 mm is 0.3% of the frictionless slide. At rest by the end.
+  const Slide held = InclineSlide(GetParam(), theta, 0.8f, 1, true);
+  EXPECT_AT_MOST("held_distance", std::abs(held.distance), 5e-3);
+  EXPECT_AT_MOST("held_speed", held.speed, 1e-4);
+  const Slide free = InclineSlide(GetParam(), theta, 0.8f, 1, false);
+  EXPECT_MEASURED_NEAR("free_distance", free.distance, frictionless, 5e-3 * frictionless);
+}
+
+// What the warm start carries is the whole solution of a resting contact:
+// once a box rests on an incline (tan θ < μ), the last step's impulses
+// (normal ones by point matching, friction ones because the manifold existed)
+// are exactly those that balance gravity, so with no velocity pass at all the
+// warm start alone holds it. Without the friction carry-over it would slide
+// frictionless (g sin θ: 1.7 m in 1 s), without the normal one sink.
+TEST_P(ContactBehaviourTest, WarmStartAloneHoldsRestingBox) {
+  const double theta = 20.0 * kPiD / 180.0;
+  const std::unique_ptr<Stepper> world = Make(InclineScene(theta, 0.8f));
+  Simulate(*world, Settings(), 1.0);  // settles with 10 passes
+  const Vec3d settled = world->Position(1);
+  StepSettings warm_start_only = Settings();
+  warm_start_only.velocity_iterations = 0;
+  Simulate(*world, warm_start_only, 1.0);
+  // Each step re-applies impulses that cancel that step's gravity to float
+  // rounding (~1e-7 relative of 0.16 m/s); 1e-5 m over 60 steps.
+  EXPECT_AT_MOST("drift", Distance(world->Position(1), settled.x(), settled.y(), settled.z()),
+                 1e-5);
+  EXPECT_AT_MOST("speed", world->LinearVelocity(1).norm(), 1e-5);
+}
+
+// ---------------------------------------------------------- rolling sphere
+
+// A solid sphere (r 0.5) sliding at v0 = 5 m/s without spin, μ = 0.5: friction
+// brakes it at μ g and spins it up at 5 μ g / (2 r) until v = ω r, after
+// t* = 2 v0 / (7 μ g) = 0.29 s; then it rolls on at 5/7 v0 (angular momentum
+// about the contact point is conserved) with no more friction.
+TEST_P(ContactBehaviourTest, SphereRollsWithoutSlipping) {
+  const double r = kRollingRadius, v0 = kRollingSpeed, mu = kRollingFriction;
+  const std::unique_ptr<Stepper> world = Make(RollingSphereScene());
+  // Sliding (10 steps < t*/dt = 17.5): full friction each step. 1e-4: one
+  // friction row at its limit μ m g dt, float roundings on 5 m/s.
+  Simulate(*world, Settings(), 10 * kDt);
+  const double t = 10 * kDt;
+  EXPECT_MEASURED_NEAR("sliding_velocity", world->LinearVelocity(1).x(), v0 - mu * kG * t, 1e-4);
+  EXPECT_MEASURED_NEAR("sliding_spin", world->AngularVelocity(1).z(), -2.5 * mu * kG / r * t,
+                       1e-4);
+  // Rolling: v = 5/7 v0, no slip at the contact (v + ω_z r = 0).
+  Simulate(*world, Settings(), 1.0 - t);
+  const double rolling = 5.0 / 7.0 * v0;
+  EXPECT_MEASURED_NEAR("rolling_velocity", world->LinearVelocity(1).x(), rolling, 1e-4);
+  EXPECT_MEASURED_NEAR("slip", world->LinearVelocity(1).x() + world->AngularVelocity(1).z() * r,
+                       0.0, 1e-5);
+  // And it keeps rolling: no loss over another second.
+  Simulate(*world, Settings(), 1.0);
+  EXPECT_MEASURED_NEAR("rolling_velocity_later", world->LinearVelocity(1).x(), rolling, 1e-4);
+  EXPECT_MEASURED_NEAR("height", world->Position(1).y(), r, 1e-5);
+}
+
+// ------------------------------------------------------ capsules and boxes
+
+// A capsule (r 0.3, h 0.5) lying along X on the floor (both ends touch) rests.
+TEST_P(ContactBehaviourTest, CapsuleLyingRests) {
+  const std::unique_ptr<Stepper> world = Make(LyingCapsuleScene());
+  world->Step(Settings());
+  Simulate(*world, Settings(), 2.0);
+  EXPECT_AT_MOST("position", Distance(world->Position(1), 0.0, 0.3, 0.0), 1e-5);
+  EXPECT_AT_MOST("linear_velocity", Distance(world->LinearVelocity(1), 0.0, 0.0, 0.0), 1e-5);
+  EXPECT_AT_MOST("angular_velocity", Distance(world->AngularVelocity(1), 0.0, 0.0, 0.0), 1e-5);
+}
+
+// A box (half 0.5, 0.3, 0.4) on the floor rests where it is.
+TEST_P(ContactBehaviourTest, BoxRestingStaysPut) {
+  const std::unique_ptr<Stepper> world = Make(RestingBoxScene());
+  Simulate(*world, Settings(), 1.0);
+  EXPECT_AT_MOST("position", Distance(world->Position(1), 0.0, 0.3, 0.0), 1e-5);
+}
+
+// A box (half 0.5) turned 30° about Z, its lowest edge 1 mm above the floor:
+// its centre of mass is beside the edge, so it tips onto its face and rests
+// there.
+TEST_P(ContactBehaviourTest, TiltedBoxOnEdgeFallsFlat) {
+  const std::unique_ptr<Stepper> world = Make(BoxOnEdgeScene());
+  world->Step(Settings());
+  Simulate(*world, Settings(), 3.0);
+  // Flat: one of the box's axes is vertical (within 1e-2 rad).
+  const Eigen::Matrix3d rotation = world->Rotation(1).toRotationMatrix();
+  double largest = 0.0;
+  for (int k = 0; k < 3; ++k) largest = std::max(largest, std::abs(rotation(1, k)));
+  EXPECT_GE(largest, std::cos(1e-2));
+  Report("tilt_from_flat", std::acos(std::min(1.0, largest)), 1e-2);
+  EXPECT_MEASURED_NEAR("height", world->Position(1).y(), 0.5, kSlop);
+}
+
+// A plane of a higher index than the sphere is body 2 of the slot (n points
+// from the sphere to the plane, −Y); the sphere rests the same.
+TEST_P(ContactBehaviourTest, PlaneAsBodyTwoHoldsTheSphere) {
+  const std::unique_ptr<Stepper> world = Make(SphereOnLaterFloorScene());
+  Simulate(*world, Settings(), 1.0);
+  EXPECT_AT_MOST("position", Distance(world->Position(0), 0.0, 1.0, 0.0), 1e-5);
+}
+
+INSTANTIATE_TEST_SUITE_P(Steppers, ContactBehaviourTest, ::testing::ValuesIn(AllStepperKinds()),
+                         [](const ::testing::TestParamInfo<StepperKind>& info) {
+                           return info.param.name;
+                         });
+
+}  // namespace
+}  // namespace manyworlds::stepper_test
