@@ -3,8 +3,10 @@
 // trajectory error against its own fine-step reference (docs/benchmarks.md).
 //
 // Throughput, for cartpole, chain16 and rackpinion (bench/mujoco_scenes.h;
-// chain16 with two MuJoCo models, ball joints and hinges), N in {64, 4096}
-// worlds, T in {1, 2} threads:
+// chain16 with two MuJoCo models, ball joints and hinges) and the contact
+// scenes hopper and quadruped (MuJoCo's hopper and ant, Y up: soft contacts
+// and position actuators against our hard contacts and position motors),
+// N in {64, 4096} worlds, T in {1, 2} threads:
 //   mujoco/<scene>/worlds:<N>/threads:<T>  one mjData per thread; thread t
 //       steps its N/T worlds one after the other: load the world's state
 //       (qpos, qvel, qacc_warmstart, time) into its mjData, set the action,
@@ -14,20 +16,25 @@
 //       (float, dispatched SIMD target, the spec's step settings).
 // Both run back to back per (scene, N, T), so their ratio sees the same load.
 // Cartpole gets CartpoleForce(seed 1, world, step) on the cart in both
-// engines; the step counter runs on through warm-up and trials in both.
-// items_per_second = world-steps/s.
+// engines, hopper and quadruped a position target per motor,
+// SceneActions(id).Target(i, world, step, 1), as our motor's target and
+// MuJoCo's actuator's ctrl; the step counter runs on through warm-up and
+// trials in both. items_per_second = world-steps/s.
 //
-// Accuracy, after 1 s and 5 s (60 and 300 steps), RMS over the first
-// --accuracy-worlds=K worlds (default 8; the worlds differ only in
-// cartpole's forces):
+// Accuracy, for cartpole, chain16 and rackpinion only (the contact scenes
+// under random targets are chaotic), after 1 s and 5 s (60 and 300 steps),
+// RMS over the first --accuracy-worlds=K worlds (default 8; the worlds
+// differ only in cartpole's forces):
 //   MuJoCo:     the benchmark model vs the same model at dt/16 (forces held
 //               for the 16 substeps), tolerance 1e-12, 400 iterations (double);
 //   manyworlds: Batch (float, dt, 10 + 2 iterations) vs reference::World<double>
 //               with 16 substeps of dt/16 and 40 + 8 iterations.
 // A spin check (2 threads summing a counter vs 1) runs before and after.
 // Exits with 1 when any world of any benchmark or accuracy run was
-// non-finite, MuJoCo warned (e.g. an unstable simulation it reset), or a
-// world stepped through a shared mjData differed from one stepped in its own.
+// non-finite, MuJoCo warned (e.g. an unstable simulation it reset), a
+// world stepped through a shared mjData differed from one stepped in its own,
+// or the masses MuJoCo computed for the contact scenes' bodies are not ours
+// (both printed before the benchmarks).
 //
 //   mujoco_bench [--accuracy-worlds=K] [Google Benchmark flags]
 
@@ -124,9 +131,11 @@ class MujocoWorlds {
     });
   }
 
-  // The world's qpos after the last Step.
+  // The world's qpos and qvel after the last Step.
   const double* QPos(std::size_t world) const { return &states_[world * stride_]; }
+  const double* QVel(std::size_t world) const { return &states_[world * stride_ + nq_]; }
   std::size_t nq() const { return nq_; }
+  std::size_t nv() const { return nv_; }
 
   std::size_t NonFiniteWorlds() const {
     std::size_t count = 0;
@@ -163,6 +172,22 @@ class MujocoWorlds {
   std::vector<double> states_;
 };
 
+bool IsContactScene(const std::string& id) {
+  const std::vector<std::string> contact = MujocoContactSceneIds();
+  return std::find(contact.begin(), contact.end(), id) != contact.end();
+}
+
+// Untimed steps of a contact scene's MuJoCo worlds before the warm-up: 2 s,
+// after which the walkers have landed and their contacts are what they stay
+// (the quadruped from ~0.25 contacts per step in the air to ~3.75 lying on
+// the ground). MuJoCo's cost per step grows with its contacts (the
+// quadruped's 2-3x from the first steps to then), and at 4096 worlds a
+// benchmark times only the first ~40 steps, so without this it would time
+// mostly the cheap fall. The batch needs none: its cost per step stayed the
+// same from the fall to lying on the ground (a fixed contact slot per shape
+// pair), and it runs hundreds of steps anyway.
+constexpr std::uint64_t kContactSettleSteps = 120;
+
 // As RunBatch: built and warmed up by the first trial run, stepped on by the
 // later ones.
 void RunMujoco(benchmark::State& state, const std::string& name, const std::string& id,
@@ -177,7 +202,9 @@ void RunMujoco(benchmark::State& state, const std::string& name, const std::stri
     run = Run{};
     run.worlds = std::make_unique<MujocoWorlds>(id, worlds, threads);
     run.name = name;
-    run.step = WarmUp([&](std::uint64_t step) { run.worlds->Step(step); });
+    const std::uint64_t settle = IsContactScene(id) ? kContactSettleSteps : 0;
+    for (std::uint64_t step = 0; step < settle; ++step) run.worlds->Step(step);
+    run.step = settle + WarmUp([&](std::uint64_t step) { run.worlds->Step(settle + step); });
   }
   for (auto _ : state) run.worlds->Step(run.step++);
   const std::size_t unsound = run.worlds->NonFiniteWorlds();
@@ -190,11 +217,16 @@ void RunMujoco(benchmark::State& state, const std::string& name, const std::stri
 
 // Swapping worlds through one mjData per thread must step each world exactly
 // as its own mjData would (else the benchmark would time something else):
-// 5 worlds on 2 threads for 60 steps against 5 separate mjData, bit for bit.
+// 5 worlds on 2 threads for 60 steps (the contact scenes 300, in which they
+// land and push off the ground under their random targets) against 5
+// separate mjData, qpos and qvel bit for bit. A contact scene's check counts
+// only if its worlds touched the ground (contacts in some step).
 bool MujocoSwapMatchesOwnData() {
   constexpr std::size_t kWorlds = 5;
   bool same = true;
-  for (const std::string& id : MujocoSceneIds()) {
+  for (const std::string& id : MujocoThroughputSceneIds()) {
+    const bool contact = IsContactScene(id);
+    const std::uint64_t steps = contact ? kFiveSeconds : kOneSecond;
     for (const std::string& model_id : MujocoModelsOf(id)) {
       MujocoWorlds swapped(model_id, kWorlds, 2);
       const MujocoModel model = LoadMujocoXml(MujocoXml(model_id, MujocoResolution::kBenchmark));
@@ -202,27 +234,62 @@ bool MujocoSwapMatchesOwnData() {
       for (std::size_t w = 0; w < kWorlds; ++w) {
         own.push_back(MakeMujocoData(model_id, model.get()));
       }
-      for (std::uint64_t step = 0; step < kOneSecond; ++step) {
+      std::size_t steps_with_contacts = 0;  // over all worlds
+      for (std::uint64_t step = 0; step < steps; ++step) {
         swapped.Step(step);
         for (std::size_t w = 0; w < kWorlds; ++w) {
           ApplyMujocoAction(model_id, model.get(), own[w].get(), w, step, kSceneSeed);
           mj_step(model.get(), own[w].get());
+          steps_with_contacts += own[w]->ncon > 0;
         }
       }
       for (std::size_t w = 0; w < kWorlds; ++w) {
-        if (std::memcmp(swapped.QPos(w), own[w]->qpos, swapped.nq() * sizeof(double)) != 0) {
+        if (std::memcmp(swapped.QPos(w), own[w]->qpos, swapped.nq() * sizeof(double)) != 0 ||
+            std::memcmp(swapped.QVel(w), own[w]->qvel, swapped.nv() * sizeof(double)) != 0) {
           std::printf("MuJoCo %s world %zu: stepping through a shared mjData differs from its "
                       "own mjData\n", model_id.c_str(), w);
           same = false;
         }
+      }
+      if (contact) {
+        std::printf("MuJoCo %s: %zu of %zu world-steps of the shared-mjData check had "
+                    "contacts\n", model_id.c_str(), steps_with_contacts,
+                    std::size_t(steps) * kWorlds);
+        if (steps_with_contacts == 0) same = false;
       }
     }
   }
   return same;
 }
 
+// MuJoCo computes the contact scenes' masses and inertias from their geoms
+// (density 1000); they must be ours (batch/contact_scenes.cc computes them
+// the same way, in float): prints every body, returns false when a mass or
+// principal inertia differs by more than 1e-5 relative.
+bool MujocoMassesMatchOurs() {
+  bool match = true;
+  std::printf("masses (kg) and principal inertias (kg m^2), ours / MuJoCo's from its geoms:\n");
+  for (const std::string& id : MujocoContactSceneIds()) {
+    const MujocoModel model = LoadMujocoXml(MujocoXml(id, MujocoResolution::kBenchmark));
+    for (const MassComparison& row : CompareMujocoMasses(id, model.get())) {
+      const auto close = [](double ours, double mujoco) {
+        return std::abs(ours - mujoco) <= 1e-5 * std::abs(mujoco);
+      };
+      bool same = close(row.mass_ours, row.mass_mujoco);
+      for (int k = 0; k < 3; ++k) same = same && close(row.inertia_ours[k], row.inertia_mujoco[k]);
+      match = match && same;
+      std::printf("  %-10s %-18s %8.4f / %8.4f   %.4g %.4g %.4g / %.4g %.4g %.4g%s\n",
+                  id.c_str(), row.body.c_str(), row.mass_ours, row.mass_mujoco,
+                  row.inertia_ours[0], row.inertia_ours[1], row.inertia_ours[2],
+                  row.inertia_mujoco[0], row.inertia_mujoco[1], row.inertia_mujoco[2],
+                  same ? "" : "  DIFFERENT");
+    }
+  }
+  return match;
+}
+
 void RegisterAll() {
-  for (const std::string& id : MujocoSceneIds()) {
+  for (const std::string& id : MujocoThroughputSceneIds()) {
     for (const std::size_t worlds : kWorldCounts) {
       for (const int threads : kThreadCounts) {
         for (const std::string& model : MujocoModelsOf(id)) {
@@ -425,12 +492,14 @@ void PrintTable(const RecordingReporter& r) {
       "\nworld-steps/s (median), MuJoCo %d (double, one mjData per thread) vs manyworlds "
       "Batch (float, target %s, %zu lanes, 10 velocity + 2 position iterations), dt 1/60 s, "
       "same worlds, threads, steps and actions; ratio = batch / MuJoCo; both chain16 models "
-      "are compared with our chain16 (ball joints)\n",
+      "are compared with our chain16 (ball joints); hopper and quadruped: MuJoCo's soft "
+      "contacts and position actuators vs our hard contacts and position motors, the same "
+      "random targets\n",
       mj_version(), probe.SimdTarget(), probe.SimdLanes());
   std::printf("%-14s %7s %12s %12s %9s %9s %12s %12s %9s %11s %11s\n", "MuJoCo model",
               "worlds", "MuJoCo 1T", "batch 1T", "ratio", "(CPU)", "MuJoCo 2T", "batch 2T",
               "ratio", "MuJoCo 2/1", "batch 2/1");
-  for (const std::string& id : MujocoSceneIds()) {
+  for (const std::string& id : MujocoThroughputSceneIds()) {
     for (const std::string& model : MujocoModelsOf(id)) {
       for (const std::size_t worlds : kWorldCounts) PrintRateRow(r, model, id, worlds);
     }
@@ -477,6 +546,7 @@ int main(int argc, char** argv) {
   const bool swap_ok = MujocoSwapMatchesOwnData();
   std::printf("MuJoCo worlds swapped through one mjData per thread step bit for bit as in their "
               "own mjData: %s\n", swap_ok ? "yes" : "NO");
+  const bool masses_ok = MujocoMassesMatchOurs();
   RegisterAll();
   PrintSpin("before", SpinRatio());
   const int color = isatty(fileno(stdout)) ? benchmark::ConsoleReporter::OO_Color : 0;
@@ -490,11 +560,11 @@ int main(int argc, char** argv) {
   benchmark::Shutdown();
   const std::size_t nonfinite = NonFiniteWorldTally();
   const int warnings = mujoco_warnings.load();
-  if (nonfinite != 0 || warnings != 0 || !accuracy_finite || !swap_ok) {
+  if (nonfinite != 0 || warnings != 0 || !accuracy_finite || !swap_ok || !masses_ok) {
     std::printf("FAILED: %zu non-finite worlds in benchmarks, %d MuJoCo warnings, accuracy "
-                "errors %s, shared mjData %s\n",
+                "errors %s, shared mjData %s, contact scenes' masses %s\n",
                 nonfinite, warnings, accuracy_finite ? "finite" : "NOT finite",
-                swap_ok ? "exact" : "NOT exact");
+                swap_ok ? "exact" : "NOT exact", masses_ok ? "ours" : "NOT ours");
     return 1;
   }
   std::printf("all worlds finite, no MuJoCo warnings\n");

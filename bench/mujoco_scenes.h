@@ -1,5 +1,6 @@
 // MuJoCo 2.2.2 models of three reference scenes (cartpole, chain16,
-// rackpinion) for the side-by-side benchmark (bench/mujoco_bench.cc,
+// rackpinion) and two contact scenes (hopper, quadruped; throughput only)
+// for the side-by-side benchmark (bench/mujoco_bench.cc,
 // docs/benchmarks.md), and the quantities both engines are compared on.
 //
 // The models follow docs/scenes.md body for body: same masses, inertias,
@@ -8,7 +9,10 @@
 // 2 pole, chain16 link i = body i + 1, rackpinion 1 pinion 2 rack), so one
 // observation function serves both engines. Where MuJoCo needs more than the
 // spec (damping, an actuator gain, an integrator), the MJCF in
-// mujoco_scenes.cc says what and why.
+// mujoco_scenes.cc says what and why. The contact scenes' models follow
+// batch/contact_scenes.cc geom for geom (capsules and a sphere of density
+// 1000 from which MuJoCo computes the masses; CompareMujocoMasses checks
+// them against ours), with position actuators for our position motors.
 #pragma once
 
 #include <mujoco/mujoco.h>
@@ -34,9 +38,21 @@ using MujocoModel = std::unique_ptr<mjModel, MujocoModelDeleter>;
 using MujocoData = std::unique_ptr<mjData, MujocoDataDeleter>;
 
 // The reference scenes with MuJoCo models: cartpole, chain16, rackpinion.
+// Compared on throughput and accuracy.
 std::vector<std::string> MujocoSceneIds();
 
-// The MuJoCo models of reference scene `scene`: its own id, and for chain16
+// The contact scenes with MuJoCo models: hopper, quadruped (Y-up versions of
+// MuJoCo's hopper and ant, batch/contact_scenes.cc). Throughput only: under
+// random motor targets every step their motion is chaotic, so there is no
+// SceneObservables for them. Their bodies are numbered as ours (0 = world or
+// ground; hopper 1 torso 2 thigh 3 leg 4 foot; quadruped 1 torso, then per
+// leg thigh and shin) and actuator i drives our constraint i's hinge.
+std::vector<std::string> MujocoContactSceneIds();
+
+// MujocoSceneIds() then MujocoContactSceneIds(): what is benchmarked.
+std::vector<std::string> MujocoThroughputSceneIds();
+
+// The MuJoCo models of scene `scene`: its own id, and for chain16
 // also "chain16-hinge" (hinges about Z instead of ball joints: the spec's
 // peer list names a hinge chain, and our chain16 released in the XY plane
 // moves in that plane, so both MuJoCo models follow the same trajectory at
@@ -58,14 +74,30 @@ MujocoModel LoadMujocoXml(const std::string& xml);
 
 // A new mjData in the scene's initial state (keyframe 0 when the model has
 // one, e.g. the cartpole's pole at 0.1 rad) with constant controls set.
+// For hopper and quadruped it also checks that actuator i is named as, and
+// moves the joint named as, our constraint i (std::logic_error if not).
 MujocoData MakeMujocoData(std::string_view id, const mjModel* model);
 
 // Sets the per-step action of world `world` for its next mj_step: cartpole, a
 // force along X through the cart's COM (xfrc_applied), exactly
-// CartpoleForce(seed, world, step); other scenes none (their controls are
-// constant, set by MakeMujocoData).
+// CartpoleForce(seed, world, step); hopper and quadruped, every actuator's
+// ctrl to our motor's position target, exactly
+// SceneActions(id).Target(i, world, step, seed) (rad); other scenes none
+// (their controls are constant, set by MakeMujocoData).
 void ApplyMujocoAction(std::string_view id, const mjModel* model, mjData* data,
                        std::uint64_t world, std::uint64_t step, std::uint64_t seed);
+
+// One body of a contact scene: our mass and principal inertias against the
+// ones MuJoCo computed from the geoms (density 1000), inertias sorted.
+struct MassComparison {
+  std::string body;
+  double mass_ours = 0, mass_mujoco = 0;
+  double inertia_ours[3] = {0, 0, 0}, inertia_mujoco[3] = {0, 0, 0};
+};
+
+// Every moving body of contact scene `id` (one of MujocoContactSceneIds())
+// in `model` (its MuJoCo model) against MakeContactScene(id).
+std::vector<MassComparison> CompareMujocoMasses(std::string_view id, const mjModel* model);
 
 // ------------------------------------------------------------- observables
 
