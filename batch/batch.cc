@@ -161,6 +161,7 @@ void Batch::Impl::Step(const StepSettings& settings, std::stop_token stop, const
   params.penetration_slop = settings.penetration_slop;
   params.max_penetration_distance = settings.max_penetration_distance;
   params.min_velocity_for_restitution = settings.min_velocity_for_restitution;
+  params.speculative_contacts_from_velocity = settings.speculative_contacts_from_velocity;
   previous_substep_dt_ = substep_dt;
 
   const std::size_t grain =

@@ -15,6 +15,9 @@
 //                    part of n_p across a^; else the lower end e - r n_p
 //   box:             the 4 corners of the face whose axis is most along n_p,
 //                    on the side facing the plane, in polygon order
+// Spheres and capsules with each other: one point from the closest points of
+// their cores (a sphere's is its centre, a capsule's its segment), pushed
+// out along the line between them by each radius.
 
 #if defined(MANYWORLDS_BATCH_CONTACT_CONSTRAINT_INL_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef MANYWORLDS_BATCH_CONTACT_CONSTRAINT_INL_H_
@@ -70,7 +73,29 @@ struct ContactStepScalars {
   ContactScalars part;
   LaneVec speculative_distance;
   Vec3 gravity;
+  bool speculative_from_velocity;  // StepSettings::speculative_contacts_from_velocity
 };
+
+// A slot's speculative distance in each world: the setting, and with
+// speculative_contacts_from_velocity also how far its shapes may approach in
+// this substep along n (body 1 to body 2): dt max(0, -(v2 - v1).n + |w1| R1 +
+// |w2| R2), R a shape's reach from its body's centre of mass. Jolt's
+// discrete contacts catch a body only once it is within the fixed distance,
+// so a fast one lands inside the other by up to one substep's travel.
+inline LaneVec SpeculativeDistance(const ContactBlock& c, const ContactStepScalars& scalars,
+                                   const Vec3& n, std::size_t offset) {
+  if (!scalars.speculative_from_velocity) return scalars.speculative_distance;
+  const BodyPair& b = c.bodies;
+  const Vec3 relative = Sub(LinearVelocity(*b.body2, b.motion2, offset),
+                            LinearVelocity(*b.body1, b.motion1, offset));
+  const LaneVec spin = hn::MulAdd(
+      hn::Sqrt(LengthSquared(AngularVelocity(*b.body1, b.motion1, offset))),
+      Splat(c.plan.reach1),
+      hn::Mul(hn::Sqrt(LengthSquared(AngularVelocity(*b.body2, b.motion2, offset))),
+              Splat(c.plan.reach2)));
+  const LaneVec approach = hn::Max(Zero(), hn::Sub(spin, Dot(relative, n)));
+  return hn::MulAdd(approach, scalars.part.delta_time, scalars.speculative_distance);
+}
 
 // A shape's frame in world space in one chunk: its centre and rotation.
 struct ShapeFrame {
@@ -185,36 +210,135 @@ inline PlanePoints BoxPoints(const PlaneLanes& plane, const ShapeFrame& box,
 }
 
 // The candidates of a plane pair in one chunk, in body order.
-inline ContactCandidates PlanePairCandidates(const ContactBlock& c, LaneVec speculative,
+inline ContactCandidates PlanePairCandidates(const ContactBlock& c,
+                                             const ContactStepScalars& scalars,
                                              std::size_t offset) {
   const ContactPlan& plan = c.plan;
-  const BodyLanes& plane_body = plan.plane_is_body1 ? *c.bodies.body1 : *c.bodies.body2;
-  const BodyLanes& shape_body = plan.plane_is_body1 ? *c.bodies.body2 : *c.bodies.body1;
-  const ShapeFrame plane_frame = WorldShapeFrame(plane_body, plan.plane, offset);
+  const bool plane_is_body1 = plan.shape1.type == ShapeType::kPlane;
+  const BodyLanes& plane_body = plane_is_body1 ? *c.bodies.body1 : *c.bodies.body2;
+  const BodyLanes& shape_body = plane_is_body1 ? *c.bodies.body2 : *c.bodies.body1;
+  const ContactShape& shape_of_plane = plane_is_body1 ? plan.shape1 : plan.shape2;
+  const ContactShape& other = plane_is_body1 ? plan.shape2 : plan.shape1;
+  const ShapeFrame plane_frame = WorldShapeFrame(plane_body, shape_of_plane, offset);
   const PlaneLanes plane{Rotate(plane_frame.rotation, Vec3{Zero(), Splat(1.0f), Zero()}),
                          plane_frame.centre};
-  const ShapeFrame shape = WorldShapeFrame(shape_body, plan.shape, offset);
+  const ShapeFrame shape = WorldShapeFrame(shape_body, other, offset);
+  const Vec3 normal = plane_is_body1 ? plane.normal : Neg(plane.normal);
+  const LaneVec speculative = SpeculativeDistance(c, scalars, normal, offset);
   const LaneVec tolerance = hn::Add(speculative, Splat(kContactManifoldTolerance));
   PlanePoints points;
   switch (plan.kind) {
     case ContactPairKind::kPlaneSphere:
-      points = SpherePoints(plane, shape, plan.shape, speculative);
+      points = SpherePoints(plane, shape, other, speculative);
       break;
     case ContactPairKind::kPlaneCapsule:
-      points = CapsulePoints(plane, shape, plan.shape, speculative, tolerance);
+      points = CapsulePoints(plane, shape, other, speculative, tolerance);
       break;
-    case ContactPairKind::kPlaneBox:
-      points = BoxPoints(plane, shape, plan.shape, speculative, tolerance);
+    default:
+      points = BoxPoints(plane, shape, other, speculative, tolerance);
       break;
   }
   ContactCandidates found;
-  found.normal = plan.plane_is_body1 ? plane.normal : Neg(plane.normal);
+  found.normal = normal;
   for (std::size_t i = 0; i < plan.point_count; ++i) {
     const Vec3 on_plane = plane.Project(points.on_shape[i]);
-    found.point1[i] = plan.plane_is_body1 ? on_plane : points.on_shape[i];
-    found.point2[i] = plan.plane_is_body1 ? points.on_shape[i] : on_plane;
+    found.point1[i] = plane_is_body1 ? on_plane : points.on_shape[i];
+    found.point2[i] = plane_is_body1 ? points.on_shape[i] : on_plane;
     found.keep[i] = points.keep[i];
   }
+  return found;
+}
+
+// A sphere's or capsule's core in world space: the segment a -> b (a = b for
+// a sphere) swept by radius.
+struct CoreSegment {
+  Vec3 a, b, centre;
+};
+
+inline CoreSegment WorldCore(const BodyLanes& body, const ContactShape& shape,
+                             std::size_t offset) {
+  const ShapeFrame frame = WorldShapeFrame(body, shape, offset);
+  if (shape.type == ShapeType::kSphere) return {frame.centre, frame.centre, frame.centre};
+  const Vec3 half = Rotate(frame.rotation, Vec3{Zero(), Splat(shape.half_height), Zero()});
+  return {Sub(frame.centre, half), Add(frame.centre, half), frame.centre};
+}
+
+// The point of segment a -> b nearest to p.
+inline Vec3 NearestOnSegment(const CoreSegment& segment, const Vec3& p) {
+  const Vec3 d = Sub(segment.b, segment.a);
+  const LaneVec t = hn::Min(
+      hn::Max(hn::Div(Dot(Sub(p, segment.a), d), LengthSquared(d)), Zero()), Splat(1.0f));
+  return MulAdd(d, t, segment.a);
+}
+
+// The closest points of two segments (docs/contacts.md): the lines' closest
+// parameters clamped, then each side's nearest point to the other's, in turn;
+// parallel segments take the middle of their overlap on segment 1.
+inline void ClosestOnSegments(const CoreSegment& s1, const CoreSegment& s2, Vec3& on1,
+                              Vec3& on2) {
+  const Vec3 d1 = Sub(s1.b, s1.a), d2 = Sub(s2.b, s2.a), e = Sub(s1.a, s2.a);
+  const LaneVec a = LengthSquared(d1), ee = LengthSquared(d2), b = Dot(d1, d2);
+  const LaneVec c = Dot(d1, e), f = Dot(d2, e);
+  const LaneVec determinant = hn::Sub(hn::Mul(a, ee), hn::Mul(b, b));
+  const LaneMask parallel = hn::Le(determinant, hn::Mul(Splat(1.0e-6f), hn::Mul(a, ee)));
+  const auto clamp01 = [](LaneVec x) { return hn::Min(hn::Max(x, Zero()), Splat(1.0f)); };
+  const LaneVec safe_determinant = hn::IfThenElse(parallel, Splat(1.0f), determinant);
+  const LaneVec skew_t1 = clamp01(
+      hn::Div(hn::Sub(hn::Mul(b, f), hn::Mul(c, ee)), safe_determinant));
+  const LaneVec start = clamp01(hn::Div(hn::Neg(c), a));
+  const LaneVec end = clamp01(hn::Div(hn::Sub(b, c), a));
+  const LaneVec overlap_t1 = hn::Mul(hn::Add(start, end), Splat(0.5f));
+  LaneVec t1 = hn::IfThenElse(parallel, overlap_t1, skew_t1);
+  const LaneVec t2 = clamp01(hn::Div(hn::MulAdd(b, t1, f), ee));
+  t1 = hn::IfThenElse(parallel, t1, clamp01(hn::Div(hn::Sub(hn::Mul(b, t2), c), a)));
+  on1 = MulAdd(d1, t1, s1.a);
+  on2 = MulAdd(d2, t2, s2.a);
+}
+
+// The one point of a sphere or capsule pair in one chunk (docs/contacts.md):
+// the closest points of the two cores, pushed out by the radii.
+inline ContactCandidates CorePairCandidates(const ContactBlock& c,
+                                            const ContactStepScalars& scalars,
+                                            std::size_t offset) {
+  const ContactPlan& plan = c.plan;
+  const CoreSegment core1 = WorldCore(*c.bodies.body1, plan.shape1, offset);
+  const CoreSegment core2 = WorldCore(*c.bodies.body2, plan.shape2, offset);
+  Vec3 on1, on2;
+  switch (plan.kind) {
+    case ContactPairKind::kSphereSphere:
+      on1 = core1.centre;
+      on2 = core2.centre;
+      break;
+    case ContactPairKind::kSphereCapsule:
+      if (plan.shape1.type == ShapeType::kSphere) {
+        on1 = core1.centre;
+        on2 = NearestOnSegment(core2, on1);
+      } else {
+        on2 = core2.centre;
+        on1 = NearestOnSegment(core1, on2);
+      }
+      break;
+    default:
+      ClosestOnSegments(core1, core2, on1, on2);
+      break;
+  }
+  const Vec3 between = Sub(on2, on1);
+  const LaneVec distance = hn::Sqrt(LengthSquared(between));
+  // Cores that meet (distance 0): crossing capsules push apart along d1 x d2
+  // as it comes (crossing cores have no side towards the other), anything
+  // else along +Y.
+  Vec3 fallback{Zero(), Splat(1.0f), Zero()};
+  if (plan.kind == ContactPairKind::kCapsuleCapsule) {
+    const Vec3 cross = Cross(Sub(core1.b, core1.a), Sub(core2.b, core2.a));
+    fallback = DirectionOrPrevious(cross, hn::Sqrt(LengthSquared(cross)), fallback);
+  }
+  ContactCandidates found;
+  found.normal = DirectionOrPrevious(between, distance, fallback);
+  const LaneVec radius1 = Splat(plan.shape1.radius), radius2 = Splat(plan.shape2.radius);
+  found.point1[0] = MulAdd(found.normal, radius1, on1);
+  found.point2[0] = NegMulAdd(found.normal, radius2, on2);
+  found.keep[0] = hn::Lt(hn::Sub(distance, hn::Add(radius1, radius2)),
+                        SpeculativeDistance(c, scalars, found.normal, offset));
   return found;
 }
 
@@ -235,15 +359,27 @@ inline Vec3 RelativeForceAcceleration(const ContactBlock& c, const Vec3& gravity
 
 inline void ContactSetup(const ContactBlock& c, const ContactStepScalars& scalars) {
   ForEachChunk([&](std::size_t offset) {
-    const ContactCandidates found = PlanePairCandidates(c, scalars.speculative_distance, offset);
+    const bool plane = c.plan.kind == ContactPairKind::kPlaneSphere ||
+                       c.plan.kind == ContactPairKind::kPlaneCapsule ||
+                       c.plan.kind == ContactPairKind::kPlaneBox;
+    const ContactCandidates found =
+        plane ? PlanePairCandidates(c, scalars, offset) : CorePairCandidates(c, scalars, offset);
     ContactSetupChunk(c.bodies, found, RelativeForceAcceleration(c, scalars.gravity, offset),
                       scalars.part, c.manifold, c.points, c.plan.point_count, offset);
   });
 }
 
+// A chunk in which no world has this slot's manifold is skipped: its rows
+// are all zero and the part writes only the lanes with a manifold, so this
+// changes no bit (most slots of a heap of shapes are empty most of the time).
+inline bool AnyManifold(const ContactBlock& c, std::size_t offset) {
+  return AnyLane(LoadFlags(c.manifold.present, offset));
+}
+
 inline void ContactWarmStart(const ContactBlock& c, float warm_start_ratio) {
   const LaneVec ratio = Splat(warm_start_ratio);
   ForEachChunk([&](std::size_t offset) {
+    if (!AnyManifold(c, offset)) return;
     ContactWarmStartChunk(c.bodies, c.manifold, c.points, c.plan.point_count, ratio, offset);
   });
 }
@@ -251,6 +387,7 @@ inline void ContactWarmStart(const ContactBlock& c, float warm_start_ratio) {
 inline bool ContactSolveVelocity(const ContactBlock& c) {
   bool applied = false;
   ForEachChunk([&](std::size_t offset) {
+    if (!AnyManifold(c, offset)) return;
     applied |= AnyLane(
         ContactSolveVelocityChunk(c.bodies, c.manifold, c.points, c.plan.point_count, offset));
   });
@@ -260,6 +397,7 @@ inline bool ContactSolveVelocity(const ContactBlock& c) {
 inline bool ContactSolvePosition(const ContactBlock& c, const ContactStepScalars& scalars) {
   bool moved = false;
   ForEachChunk([&](std::size_t offset) {
+    if (!AnyManifold(c, offset)) return;
     moved |= AnyLane(ContactSolvePositionChunk(c.bodies, c.manifold, c.points,
                                                c.plan.point_count, scalars.part, offset));
   });

@@ -26,6 +26,22 @@ ContactShape ShapeOf(const ShapeSettings& s) {
   return shape;
 }
 
+// The largest distance of the shape's points from the body's centre of mass.
+float ReachOf(const ShapeSettings& s) {
+  const double centre = std::sqrt(double(s.position[0]) * s.position[0] +
+                                  double(s.position[1]) * s.position[1] +
+                                  double(s.position[2]) * s.position[2]);
+  switch (s.type) {
+    case ShapeType::kSphere: return float(centre + s.radius);
+    case ShapeType::kCapsule: return float(centre + s.half_height + s.radius);
+    case ShapeType::kBox:
+      return float(centre + std::sqrt(double(s.half_extents[0]) * s.half_extents[0] +
+                                      double(s.half_extents[1]) * s.half_extents[1] +
+                                      double(s.half_extents[2]) * s.half_extents[2]));
+    default: return 0.0f;
+  }
+}
+
 const char* ShapeTypeName(ShapeType type) {
   switch (type) {
     case ShapeType::kNone: return "none";
@@ -57,6 +73,9 @@ const char* ContactPairKindName(ContactPairKind kind) {
     case ContactPairKind::kPlaneSphere: return "plane-sphere";
     case ContactPairKind::kPlaneCapsule: return "plane-capsule";
     case ContactPairKind::kPlaneBox: return "plane-box";
+    case ContactPairKind::kSphereSphere: return "sphere-sphere";
+    case ContactPairKind::kSphereCapsule: return "sphere-capsule";
+    case ContactPairKind::kCapsuleCapsule: return "capsule-capsule";
   }
   return "?";
 }
@@ -88,22 +107,38 @@ std::vector<ContactPlan> FindContactPairs(const Scene& scene) {
       c.body2 = j;
       c.motion1 = bodies[i].motion_type;
       c.motion2 = bodies[j].motion_type;
-      const bool a_plane = a.type == ShapeType::kPlane;
-      const bool b_plane = b.type == ShapeType::kPlane;
-      if (a_plane == b_plane) {
+      c.shape1 = ShapeOf(a);
+      c.shape2 = ShapeOf(b);
+      c.reach1 = ReachOf(a);
+      c.reach2 = ReachOf(b);
+      const auto is = [&](ShapeType x, ShapeType y) {
+        return (a.type == x && b.type == y) || (a.type == y && b.type == x);
+      };
+      if (is(ShapeType::kPlane, ShapeType::kSphere)) {
+        c.kind = ContactPairKind::kPlaneSphere;
+        c.point_count = 1;
+      } else if (is(ShapeType::kPlane, ShapeType::kCapsule)) {
+        c.kind = ContactPairKind::kPlaneCapsule;
+        c.point_count = 2;
+      } else if (is(ShapeType::kPlane, ShapeType::kBox)) {
+        c.kind = ContactPairKind::kPlaneBox;
+        c.point_count = 4;
+      } else if (is(ShapeType::kSphere, ShapeType::kSphere)) {
+        c.kind = ContactPairKind::kSphereSphere;
+        c.point_count = 1;
+      } else if (is(ShapeType::kSphere, ShapeType::kCapsule)) {
+        c.kind = ContactPairKind::kSphereCapsule;
+        c.point_count = 1;
+      } else if (is(ShapeType::kCapsule, ShapeType::kCapsule)) {
+        c.kind = ContactPairKind::kCapsuleCapsule;
+        c.point_count = 1;
+      } else {
         Refuse(c.label, "shape.type",
                std::string("pairs a ") + ShapeTypeName(a.type) + " with a " +
                    ShapeTypeName(b.type) +
-                   ", which contacts do not collide yet (only a plane with a sphere, "
-                   "capsule or box): put the two in collision groups that do not meet");
-      }
-      c.plane_is_body1 = a_plane;
-      c.plane = ShapeOf(a_plane ? a : b);
-      c.shape = ShapeOf(a_plane ? b : a);
-      switch (c.shape.type) {
-        case ShapeType::kSphere: c.kind = ContactPairKind::kPlaneSphere; c.point_count = 1; break;
-        case ShapeType::kCapsule: c.kind = ContactPairKind::kPlaneCapsule; c.point_count = 2; break;
-        default: c.kind = ContactPairKind::kPlaneBox; c.point_count = 4; break;
+                   ", which contacts do not collide yet (a plane with a sphere, capsule or "
+                   "box; spheres and capsules with each other): put the two in collision "
+                   "groups that do not meet");
       }
       c.friction = float(std::sqrt(double(a.friction) * double(b.friction)));
       c.restitution = std::max(a.restitution, b.restitution);

@@ -18,6 +18,9 @@ enum class ContactPairKind : std::uint8_t {
   kPlaneSphere,
   kPlaneCapsule,
   kPlaneBox,
+  kSphereSphere,
+  kSphereCapsule,
+  kCapsuleCapsule,
 };
 const char* ContactPairKindName(ContactPairKind kind);
 
@@ -36,10 +39,13 @@ struct ContactPlan {
   std::size_t body1, body2;   // body1 < body2: the normal points from 1 to 2
   MotionType motion1, motion2;
   ContactPairKind kind;
-  bool plane_is_body1;        // else the plane is body 2 and the normal is -n_plane
-  ContactShape plane, shape;  // the plane and the other shape
+  ContactShape shape1, shape2;  // body 1's and body 2's
+  // How far each shape reaches from its body's centre of mass (m; a plane:
+  // 0, only static bodies have one): bounds a point's speed by |w| reach.
+  float reach1 = 0.0f, reach2 = 0.0f;
   float friction, restitution;  // combined: sqrt(mu1 mu2), max(e1, e2)
-  std::size_t point_count;      // points reserved: sphere 1, capsule 2, box 4
+  std::size_t point_count;  // points reserved: on a plane sphere 1, capsule 2, box 4;
+                            // sphere and capsule pairs 1
   std::size_t offset = 0;         // ContactLanes in the block
   std::size_t points_offset = 0;  // point_count ContactPointLanes, one after another
   std::size_t motion_offset1 = static_cast<std::size_t>(-1);  // dynamic bodies' forces

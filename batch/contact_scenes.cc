@@ -16,18 +16,20 @@ namespace {
 
 using scene_bodies::Dynamic;
 
-enum class ContactId { kBoxDrop, kSphereRoll, kHopper, kQuadruped };
+enum class ContactId { kBoxDrop, kSphereRoll, kPile, kHopper, kQuadruped };
 
 struct ContactEntry {
   std::string_view id;
   ContactId scene;
   std::string_view description;
 };
-constexpr std::array<ContactEntry, 4> kContactScenes{{
+constexpr std::array<ContactEntry, 5> kContactScenes{{
     {"box-drop", ContactId::kBoxDrop,
      "a box dropped corner first on the ground: lands, settles, no jitter or drift"},
     {"sphere-roll", ContactId::kSphereRoll,
      "a sliding sphere on the ground: friction brings it to rolling at 5/7 of its speed"},
+    {"pile", ContactId::kPile,
+     "3 spheres and 3 capsules dropped on each other and the ground: shapes that touch"},
     {"hopper", ContactId::kHopper,
      "MuJoCo's planar hopper: 4 capsules, 3 hinge position motors, feet on the ground"},
     {"quadruped", ContactId::kQuadruped,
@@ -78,6 +80,40 @@ Scene SphereRoll() {
   sphere.shape.radius = 0.5f;
   sphere.shape.friction = 0.04f;  // mu = 0.2 with the ground
   scene.AddBody(sphere);
+  return scene;
+}
+
+// Spheres (r 0.3 m) and capsules (r 0.2 m, 0.8 m long) of 1 kg and
+// assorted tilts, dropped from 1-3 m so that they land on each other, roll
+// and come to rest on the ground in a heap.
+Scene Pile() {
+  Scene scene;
+  scene.AddBody(Ground());
+  for (int i = 0; i < 6; ++i) {
+    const float x = 0.25f * float(i % 3) - 0.25f, z = 0.2f * float(i % 2) - 0.1f;
+    const float y = 1.0f + 0.45f * float(i);
+    // About an axis in the XZ plane, a different tilt for each body.
+    const double angle = 0.5 + 0.4 * i, axis_x = std::cos(1.3 * i), axis_z = std::sin(1.3 * i);
+    const Quaternion tilt{float(axis_x * std::sin(angle / 2)), 0.0f,
+                          float(axis_z * std::sin(angle / 2)), float(std::cos(angle / 2))};
+    BodySettings body;
+    if (i % 2 == 0) {
+      body = Dynamic("sphere" + std::to_string(i / 2), 1.0f, {0.036f, 0.036f, 0.036f},
+                     {x, y, z}, tilt);
+      body.shape.type = ShapeType::kSphere;
+      body.shape.radius = 0.3f;
+    } else {
+      // I of a 0.8 m rod of 1 kg across, of a 0.2 m cylinder along.
+      body = Dynamic("capsule" + std::to_string(i / 2), 1.0f, {0.063f, 0.02f, 0.063f},
+                     {x, y, z}, tilt);
+      body.shape.type = ShapeType::kCapsule;
+      body.shape.radius = 0.2f;
+      body.shape.half_height = 0.2f;
+    }
+    body.shape.friction = 0.5f;
+    body.shape.restitution = 0.3f;
+    scene.AddBody(body);
+  }
   return scene;
 }
 
@@ -260,6 +296,7 @@ Scene MakeContactScene(std::string_view id) {
   switch (entry->scene) {
     case ContactId::kBoxDrop: return BoxDrop();
     case ContactId::kSphereRoll: return SphereRoll();
+    case ContactId::kPile: return Pile();
     case ContactId::kHopper: return Hopper();
     case ContactId::kQuadruped: return Quadruped();
   }

@@ -209,7 +209,8 @@ bool StepBlockWith(const StepPlan& plan, std::byte* block, const std::byte* next
                      Splat(params.penetration_slop), Splat(params.max_penetration_distance),
                      Splat(params.baumgarte)},
       Splat(params.speculative_contact_distance),
-      Vec3{Splat(params.gravity[0]), Splat(params.gravity[1]), Splat(params.gravity[2])}};
+      Vec3{Splat(params.gravity[0]), Splat(params.gravity[1]), Splat(params.gravity[2])},
+      params.speculative_contacts_from_velocity};
   const LaneVec dt = Splat(params.substep_delta_time);
   const Vec3 gravity{Splat(params.gravity[0]), Splat(params.gravity[1]),
                      Splat(params.gravity[2])};

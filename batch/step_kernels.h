@@ -31,6 +31,7 @@ struct StepParams {
   // Contacts (StepSettings, docs/contacts.md).
   float speculative_contact_distance, penetration_slop, max_penetration_distance,
       min_velocity_for_restitution;
+  bool speculative_contacts_from_velocity;
 };
 
 struct StepKernels {

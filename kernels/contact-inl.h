@@ -229,15 +229,20 @@ struct ContactVelocities {
             LinearVelocity(*bodies.body2, bodies.motion2, offset),
             AngularVelocity(*bodies.body2, bodies.motion2, offset)};
   }
-  void Write(const BodyPair& bodies, std::size_t offset) const {
-    if (bodies.motion1 == MotionType::kDynamic) {
-      StoreVec3(LockTranslation(*bodies.body1, v1, offset), bodies.body1->linear_velocity, offset);
-      StoreVec3(w1, bodies.body1->angular_velocity, offset);
-    }
-    if (bodies.motion2 == MotionType::kDynamic) {
-      StoreVec3(LockTranslation(*bodies.body2, v2, offset), bodies.body2->linear_velocity, offset);
-      StoreVec3(w2, bodies.body2->angular_velocity, offset);
-    }
+  // Only the lanes of `touched` (those with a manifold) are written: the
+  // others' rows are all zero, and skipping them keeps every bit (v + 0
+  // would turn a -0 into +0), so a chunk with no manifold can be skipped
+  // whole and a world's bits never depend on its neighbours.
+  void Write(const BodyPair& bodies, LaneMask touched, std::size_t offset) const {
+    const auto write = [&](BodyLanes& body, const Vec3& v, const Vec3& w) {
+      StoreVec3(Select(touched, LockTranslation(body, v, offset),
+                       LoadVec3(body.linear_velocity, offset)),
+                body.linear_velocity, offset);
+      StoreVec3(Select(touched, w, LoadVec3(body.angular_velocity, offset)),
+                body.angular_velocity, offset);
+    };
+    if (bodies.motion1 == MotionType::kDynamic) write(*bodies.body1, v1, w1);
+    if (bodies.motion2 == MotionType::kDynamic) write(*bodies.body2, v2, w2);
   }
 
   // -J v of an axis row: n.(v1 - v2) + a1.w1 - a2.w2 (a static body's a is 0).
@@ -288,7 +293,7 @@ HWY_INLINE void ContactWarmStartChunk(const BodyPair& bodies, ContactLanes& mani
   for (std::size_t i = 0; i < point_count; ++i) {
     warm_start(n, points[i].normal_row, points[i].normal_lambda);
   }
-  velocities.Write(bodies, offset);
+  velocities.Write(bodies, LoadFlags(manifold.present, offset), offset);
 }
 
 // One velocity pass of the manifold; returns the lanes that applied an impulse.
@@ -356,7 +361,7 @@ HWY_INLINE LaneMask ContactSolveVelocityChunk(const BodyPair& bodies, ContactLan
     velocities.ApplyAxis(bodies, n, row, delta, offset);
     applied = hn::Or(applied, hn::Ne(delta, Zero()));
   }
-  velocities.Write(bodies, offset);
+  velocities.Write(bodies, LoadFlags(manifold.present, offset), offset);
   return applied;
 }
 
@@ -389,8 +394,30 @@ HWY_INLINE LaneMask ContactSolvePositionChunk(const BodyPair& bodies,
     AxisCalculatePropertiesChunk(bodies, Sub(midpoint, LoadVec3(bodies.body1->position, offset)),
                                  Sub(midpoint, LoadVec3(bodies.body2->position, offset)), n,
                                  Zero(), point.normal_row, scratch_lambda, offset);
-    moved = hn::Or(moved, AxisSolvePositionChunk(bodies, n, hn::IfThenElseZero(corrects, error),
-                                                 scalars.baumgarte, point.normal_row, offset));
+    // lambda = -beta C / K; only the lanes that correct are written (see
+    // ContactVelocities::Write).
+    const LaneVec lambda = hn::IfThenElseZero(
+        corrects, hn::Mul(hn::Neg(hn::Mul(Load(point.normal_row.effective_mass, offset),
+                                          scalars.baumgarte)),
+                          error));
+    // A zero lambda turns no rotation (AddRotationStep keeps q below 1e-6 rad).
+    const auto step = [&](BodyLanes& body, const Vec3& inv_i_a, LaneVec signed_lambda) {
+      const Vec3 x = LoadVec3(body.position, offset);
+      const Vec3 moved_x = Add(
+          x, LockTranslation(body, Scale(n, hn::Mul(signed_lambda, Load(body.inv_mass, offset))),
+                             offset));
+      StoreVec3(Select(corrects, moved_x, x), body.position, offset);
+      AddRotationStep(body, Scale(inv_i_a, signed_lambda), offset);
+    };
+    if (bodies.motion1 == MotionType::kDynamic) {
+      step(*bodies.body1, LoadVec3(point.normal_row.inv_i1_r1_plus_u_x_axis, offset),
+           hn::Neg(lambda));
+    }
+    if (bodies.motion2 == MotionType::kDynamic) {
+      step(*bodies.body2, LoadVec3(point.normal_row.inv_i2_r2_x_axis, offset), lambda);
+    }
+    moved = hn::Or(moved, hn::And(corrects, hn::Ne(Load(point.normal_row.effective_mass, offset),
+                                                   Zero())));
   }
   return moved;
 }

@@ -177,7 +177,30 @@ void BindJointCoordinates(py::class_<Batch>& cls) {
           },
           py::arg("constraint"), py::arg("out") = py::none(),
           "The force (N) or torque (N m) of each motor or friction row in the last substep "
-          "of the last step: float32 [world, motor_force_count(constraint)].");
+          "of the last step: float32 [world, motor_force_count(constraint)].")
+      .def_property_readonly("num_contact_slots", &Batch::ContactSlotCount,
+                             "Pairs of shapes that may touch (docs/contacts.md).")
+      .def(
+          "contact_slot",
+          [](const Batch& batch, std::int64_t slot) {
+            const Batch::ContactSlot s =
+                batch.GetContactSlot(CheckedIndex(slot, batch.ContactSlotCount(), "contact slot"));
+            return py::make_tuple(s.body1, s.body2, s.max_points);
+          },
+          py::arg("slot"), "(body1, body2, max_points) of a contact slot, body1 < body2.")
+      .def(
+          "get_contacts",
+          [](const Batch& batch, py::object out) {
+            const Shape shape{Worlds(batch), static_cast<py::ssize_t>(batch.ContactSlotCount()),
+                              static_cast<py::ssize_t>(Batch::kContactFloats)};
+            py::array result = OutputArray(out, shape);
+            batch.GetContacts(OutputArgument<float>(result, "out", shape));
+            return result;
+          },
+          py::arg("out") = py::none(),
+          "Per world and contact slot, from the last substep: points kept, normal force (N), "
+          "force on body 2 (N, xyz), normal from body 1 to body 2 (xyz): float32 "
+          "[world, num_contact_slots, 8]; zeros where the shapes do not touch.");
 }
 
 // A drive target of every world, float32 [world, width], through the C++

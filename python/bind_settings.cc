@@ -237,7 +237,11 @@ void BindStepAndBatchOptions(py::module_& m) {
       .def_readwrite("max_penetration_distance", &StepSettings::max_penetration_distance,
                      "m: most penetration one position step corrects")
       .def_readwrite("min_velocity_for_restitution", &StepSettings::min_velocity_for_restitution,
-                     "m/s: slower approaches do not bounce");
+                     "m/s: slower approaches do not bounce")
+      .def_readwrite("speculative_contacts_from_velocity",
+                     &StepSettings::speculative_contacts_from_velocity,
+                     "grow each contact's speculative distance by its approach in a substep "
+                     "(off: Jolt's fixed distance)");
 
   py::class_<BatchOptions> options(m, "BatchOptions", "How a Batch runs its worlds.");
   DefKeywordConstructors(options);

@@ -4,7 +4,8 @@
 // ../shared/docs/jolt-contacts.md §3-§6 in its snapshot friction model).
 // Scalar reference, written from those texts; nothing of batch/ or kernels/.
 //
-// Supported pairs: a plane (static body) with a sphere, capsule or box.
+// Supported pairs: a plane (static body) with a sphere, capsule or box; a
+// sphere or capsule with a sphere or capsule (any motion types, one dynamic).
 //
 // ---- Points (every substep, from the poses at its start) ----
 // Plane: outward unit normal n_p (the plane shape's +Y), centre o, signed
@@ -16,6 +17,17 @@
 // kept point is (y_j on the shape, y_j − φ(y_j) n_p on the plane).
 // n points from body 1 to body 2: n_p when the plane is body 1, −n_p otherwise;
 // p1 is the point on body 1, p2 the point on body 2, so s = (p2 − p1)·n = φ.
+//
+// Spheres and capsules (one point): each is a core segment swept by its
+// radius, a = c − h â to b = c + h â (a sphere: a = b = c). With s1, s2 the
+// closest points of body 1's and body 2's cores (sphere–sphere: the centres;
+// sphere–capsule: the segment point nearest the centre; capsule–capsule: the
+// segments' closest points, the middle of the overlap when parallel),
+//   δ = s2 − s1, L = |δ|, n = δ/L (L = 0: n = normalize(d1 × d2) for two
+//   capsules, turned from body 1's centre of mass towards body 2's; else, or
+//   d1 × d2 = 0, +Y),
+//   p1 = s1 + r1 n, p2 = s2 − r2 n, s = L − r1 − r2;
+// the point (and the manifold) exists when L − r1 − r2 < D.
 //
 // ---- Rows (Jolt's snapshot model) ----
 // Per kept point i, at the midpoint p_i = (p1_i + p2_i)/2, r1 = p_i − x1,
@@ -61,6 +73,8 @@
 #include <cstddef>
 #include <limits>
 #include <stdexcept>
+#include <tuple>
+#include <utility>
 
 #include "manyworlds/scene.h"
 #include "reference/body.h"
@@ -79,6 +93,9 @@ struct ContactSettings {
   T penetration_slop = T(0.02);
   T max_penetration_distance = T(0.2);
   T min_velocity_for_restitution = T(1);
+  // StepSettings::speculative_contacts_from_velocity: D grows by the
+  // shapes' approach in the substep (docs/contacts.md, "Settings").
+  bool from_velocity = false;
 };
 
 // A body's shape in T: where it sits in the body's COM frame and its sizes.
@@ -183,25 +200,180 @@ PlaneCandidates<T> PlaneContactCandidates(const Vec3<T>& n_p, const ContactShape
   return out;
 }
 
+// ---- spheres and capsules (docs/contacts.md, "Points of a pair of spheres
+// and capsules")
+
+// The core of a sphere or capsule in world space: the segment a..b (a = b = c
+// for a sphere), its centre c and its radius.
+template <class T>
+struct RoundCore {
+  bool is_capsule = false;
+  Vec3<T> centre = Vec3<T>::Zero();
+  Vec3<T> a = Vec3<T>::Zero();  // centre − h â
+  Vec3<T> b = Vec3<T>::Zero();  // centre + h â
+  T radius = T(0);
+};
+
+// `shape` (a sphere or capsule) with world centre `centre` and world rotation
+// `rotation`; â is the shape's +Y.
+template <class T>
+RoundCore<T> MakeRoundCore(const ContactShape<T>& shape, const Vec3<T>& centre,
+                           const Quat<T>& rotation) {
+  RoundCore<T> core;
+  core.is_capsule = shape.type == ShapeType::kCapsule;
+  core.centre = centre;
+  core.radius = shape.radius;
+  core.a = centre;
+  core.b = centre;
+  if (core.is_capsule) {
+    const Vec3<T> axis = rotation * Vec3<T>::UnitY();
+    core.a = centre - shape.half_height * axis;
+    core.b = centre + shape.half_height * axis;
+  }
+  return core;
+}
+
+template <class T>
+T Clamp01(T x) {
+  return std::min(std::max(x, T(0)), T(1));
+}
+
+// The point of segment a..b nearest to `point`:
+//   t = clamp((p − a)·(b − a) / |b − a|², 0, 1),  s = a + t (b − a).
+// (A segment of zero length, a capsule of half height 0, is its point a.)
+template <class T>
+Vec3<T> NearestOnSegment(const Vec3<T>& point, const Vec3<T>& a, const Vec3<T>& b) {
+  const Vec3<T> d = b - a;
+  const T length_squared = d.dot(d);
+  if (!(length_squared > T(0))) return a;
+  const T t = Clamp01((point - a).dot(d) / length_squared);
+  return a + t * d;
+}
+
+// The closest points s1 = a1 + t1 d1, s2 = a2 + t2 d2 of segments a1..b1 and
+// a2..b2. With d1 = b1 − a1, d2 = b2 − a2, e = a1 − a2 and
+//   A = d1·d1, E = d2·d2, B = d1·d2, C = d1·e, F = d2·e, Δ = A E − B²
+// (|s2 − s1|² as a function of (t1, t2) has its minimum at
+//   A t1 − B t2 = −C,  B t1 − E t2 = −F):
+// - not parallel (Δ > 1e-6 A E): t1 = clamp((B F − C E)/Δ), the unconstrained
+//   minimum clamped; then t2 = clamp((B t1 + F)/E), the point of segment 2
+//   nearest s1; then t1 = clamp((B t2 − C)/A), the point of segment 1 nearest s2.
+// - parallel: no unique pair; the middle of the overlap of segment 2 projected
+//   on segment 1: u_a = clamp(−C/A), u_b = clamp((B − C)/A) (a2 and b2 as
+//   parameters of segment 1), t1 = (u_a + u_b)/2, t2 = clamp((B t1 + F)/E).
+// A segment of zero length (not a case of the doc; only a capsule of half
+// height 0 makes one) is its point a: t = 0, the other segment's parameter
+// the nearest to it.
+template <class T>
+std::pair<Vec3<T>, Vec3<T>> ClosestPointsOfSegments(const Vec3<T>& a1, const Vec3<T>& b1,
+                                                    const Vec3<T>& a2, const Vec3<T>& b2) {
+  const Vec3<T> d1 = b1 - a1;
+  const Vec3<T> d2 = b2 - a2;
+  const Vec3<T> e = a1 - a2;
+  const T A = d1.dot(d1), E = d2.dot(d2), B = d1.dot(d2), C = d1.dot(e), F = d2.dot(e);
+  T t1 = T(0), t2 = T(0);
+  if (!(A > T(0)) || !(E > T(0))) {
+    if (A > T(0)) t1 = Clamp01(-C / A);  // a2 against segment 1
+    if (E > T(0)) t2 = Clamp01(F / E);   // a1 against segment 2
+  } else {
+    const T delta = A * E - B * B;
+    if (delta > T(1e-6) * A * E) {
+      t1 = Clamp01((B * F - C * E) / delta);
+      t2 = Clamp01((B * t1 + F) / E);
+      t1 = Clamp01((B * t2 - C) / A);
+    } else {
+      const T u_a = Clamp01(-C / A);
+      const T u_b = Clamp01((B - C) / A);
+      t1 = (u_a + u_b) / T(2);
+      t2 = Clamp01((B * t1 + F) / E);
+    }
+  }
+  return {a1 + t1 * d1, a2 + t2 * d2};
+}
+
+// The one candidate point of two round shapes, body 1's core first.
+template <class T>
+struct RoundCandidate {
+  Vec3<T> s1 = Vec3<T>::Zero();      // on body 1's core
+  Vec3<T> s2 = Vec3<T>::Zero();      // on body 2's core
+  Vec3<T> normal = Vec3<T>::UnitY();  // body 1 to body 2
+  T distance = T(0);                  // L = |s2 − s1|
+};
+
+template <class T>
+RoundCandidate<T> RoundContactCandidate(const RoundCore<T>& core1, const RoundCore<T>& core2) {
+  RoundCandidate<T> out;
+  if (!core1.is_capsule && !core2.is_capsule) {
+    out.s1 = core1.centre;
+    out.s2 = core2.centre;
+  } else if (!core1.is_capsule) {
+    out.s1 = core1.centre;
+    out.s2 = NearestOnSegment(core1.centre, core2.a, core2.b);
+  } else if (!core2.is_capsule) {
+    out.s1 = NearestOnSegment(core2.centre, core1.a, core1.b);
+    out.s2 = core2.centre;
+  } else {
+    std::tie(out.s1, out.s2) = ClosestPointsOfSegments(core1.a, core1.b, core2.a, core2.b);
+  }
+  const Vec3<T> delta = out.s2 - out.s1;
+  out.distance = delta.norm();
+  if (out.distance > T(0)) {
+    out.normal = delta / out.distance;
+    return out;
+  }
+  // L = 0: the centres or the cores meet and δ gives no direction (Jolt's EPA
+  // picks one; any fixed rule will do). Crossing capsules: across both
+  // segments, d1 × d2 as it comes (two segments through one point have no
+  // side towards the other: their centres are level along d1 × d2); else, or
+  // when d1 × d2 = 0, +Y.
+  out.normal = Vec3<T>::UnitY();
+  if (core1.is_capsule && core2.is_capsule) {
+    const Vec3<T> across = (core1.b - core1.a).cross(core2.b - core2.a);
+    const T length = across.norm();
+    if (length > T(0)) out.normal = across / length;
+  }
+  return out;
+}
+
 template <class T>
 class ContactConstraint {
  public:
-  // Bodies body1 < body2 (scene indices) and their shapes; exactly one shape
-  // is a plane (the world checks the pair). μ = sqrt(μ1 μ2), e = max(e1, e2).
+  // Bodies body1 < body2 (scene indices) and their shapes: a plane with a
+  // sphere, capsule or box (either way round), or two spheres or capsules.
+  // μ = sqrt(μ1 μ2), e = max(e1, e2).
   ContactConstraint(std::size_t body1, std::size_t body2, const ShapeSettings& shape1,
                     const ShapeSettings& shape2)
       : body1_(body1),
         body2_(body2),
+        shape1_(MakeContactShape<T>(shape1)),
+        shape2_(MakeContactShape<T>(shape2)),
         plane_is_body1_(shape1.type == ShapeType::kPlane),
-        plane_(MakeContactShape<T>(plane_is_body1_ ? shape1 : shape2)),
-        other_(MakeContactShape<T>(plane_is_body1_ ? shape2 : shape1)),
         friction_(std::sqrt(T(shape1.friction) * T(shape2.friction))),
         restitution_(std::max(T(shape1.restitution), T(shape2.restitution))) {
-    if (plane_.type != ShapeType::kPlane ||
-        (other_.type != ShapeType::kSphere && other_.type != ShapeType::kCapsule &&
-         other_.type != ShapeType::kBox)) {
+    if (IsPlanePair(shape1.type, shape2.type)) {
+      round_pair_ = false;
+    } else if (IsRound(shape1.type) && IsRound(shape2.type)) {
+      round_pair_ = true;
+    } else {
       throw std::invalid_argument(
-          "reference::ContactConstraint: only a plane with a sphere, capsule or box");
+          "reference::ContactConstraint: only a plane with a sphere, capsule or box, or a "
+          "sphere or capsule with a sphere or capsule");
+    }
+  }
+
+  // Whether a slot of these two shape types (either order) is supported.
+  static bool Supports(ShapeType type1, ShapeType type2) {
+    return IsPlanePair(type1, type2) || (IsRound(type1) && IsRound(type2));
+  }
+
+  // The most points the slot can hold in a substep: plane with a sphere 1,
+  // with a capsule 2, with a box 4; two spheres or capsules 1.
+  int MaxPointCount() const {
+    if (round_pair_) return 1;
+    switch ((plane_is_body1_ ? shape2_ : shape1_).type) {
+      case ShapeType::kSphere: return 1;
+      case ShapeType::kCapsule: return 2;
+      default: return 4;  // the box
     }
   }
 
@@ -231,34 +403,14 @@ class ContactConstraint {
     angular_ = Row{};
     friction_active_ = false;
 
-    // ---- points
-    const Body<T>& plane_body = plane_is_body1_ ? body1 : body2;
-    const Body<T>& other_body = plane_is_body1_ ? body2 : body1;
-    const Quat<T> plane_rotation = plane_body.rotation * plane_.rotation;
-    const Vec3<T> n_p = plane_rotation * Vec3<T>::UnitY();
-    const Vec3<T> origin = plane_body.position + plane_body.rotation * plane_.position;
-    const PlaneCandidates<T> candidates = PlaneContactCandidates<T>(
-        n_p, other_, Vec3<T>(other_body.position + other_body.rotation * other_.position),
-        Quat<T>(other_body.rotation * other_.rotation));
-    std::array<T, kMaxContactPoints> phi{};
-    T deepest = std::numeric_limits<T>::infinity();
-    for (int j = 0; j < candidates.count; ++j) {
-      phi[j] = n_p.dot(candidates.on_shape[j] - origin);
-      deepest = std::min(deepest, phi[j]);
+    // ---- points (count_, normal_direction_, point1_, point2_)
+    if (round_pair_) {
+      FindRoundPoint(body1, body2, settings, dt);
+    } else {
+      FindPlanePoints(body1, body2, settings, dt);
     }
-    const T keep = settings.speculative_contact_distance + T(0.001);  // Jolt's 1 mm tolerance
-    if (!(deepest < settings.speculative_contact_distance)) return;  // no manifold this substep
-
-    normal_direction_ = plane_is_body1_ ? n_p : Vec3<T>(-n_p);
+    if (count_ == 0) return;  // no manifold this substep
     const Vec3<T>& n = normal_direction_;
-    for (int j = 0; j < candidates.count; ++j) {
-      if (!(phi[j] < keep)) continue;
-      const Vec3<T> on_shape = candidates.on_shape[j];
-      const Vec3<T> on_plane = on_shape - phi[j] * n_p;
-      point1_[count_] = plane_is_body1_ ? on_plane : on_shape;
-      point2_[count_] = plane_is_body1_ ? on_shape : on_plane;
-      ++count_;
-    }
 
     // ---- normal rows, with the impulse of the matching old point
     const Vec3<T> v_rel_linear = body2.LinearVelocity() - body1.LinearVelocity();
@@ -434,6 +586,103 @@ class ContactConstraint {
   T Restitution() const { return restitution_; }  // max(e1, e2)
 
  private:
+  static bool IsRound(ShapeType type) {
+    return type == ShapeType::kSphere || type == ShapeType::kCapsule;
+  }
+  static bool IsPlanePair(ShapeType type1, ShapeType type2) {
+    const auto plane_with = [](ShapeType plane, ShapeType other) {
+      return plane == ShapeType::kPlane && (IsRound(other) || other == ShapeType::kBox);
+    };
+    return plane_with(type1, type2) || plane_with(type2, type1);
+  }
+
+  // A shape's centre and rotation in world space.
+  static Vec3<T> ShapeCentre(const Body<T>& body, const ContactShape<T>& shape) {
+    return body.position + body.rotation * shape.position;
+  }
+  static Quat<T> ShapeRotation(const Body<T>& body, const ContactShape<T>& shape) {
+    return body.rotation * shape.rotation;
+  }
+
+  // How far a shape reaches from its body's centre of mass: |p| plus the
+  // sphere's radius, the capsule's half height and radius, the box's half
+  // diagonal; a plane 0.
+  static T Reach(const ContactShape<T>& shape) {
+    const T centre = shape.position.norm();
+    switch (shape.type) {
+      case ShapeType::kSphere: return centre + shape.radius;
+      case ShapeType::kCapsule: return centre + shape.half_height + shape.radius;
+      case ShapeType::kBox: return centre + shape.half_extents.norm();
+      default: return T(0);
+    }
+  }
+
+  // D, or with from_velocity D + dt max(0, −(v2 − v1)·n + |ω1| R1 + |ω2| R2):
+  // how far the shapes may approach along n within the substep.
+  T SpeculativeDistance(const Body<T>& body1, const Body<T>& body2, const Vec3<T>& n,
+                        const ContactSettings<T>& settings, T dt) const {
+    if (!settings.from_velocity) return settings.speculative_contact_distance;
+    const T approach = -(body2.LinearVelocity() - body1.LinearVelocity()).dot(n) +
+                       body1.AngularVelocity().norm() * Reach(shape1_) +
+                       body2.AngularVelocity().norm() * Reach(shape2_);
+    return settings.speculative_contact_distance + dt * std::max(T(0), approach);
+  }
+
+  // A plane with a sphere, capsule or box: the candidates of the other shape,
+  // the manifold when the deepest has φ < D, the candidates with φ < D + 1 mm.
+  void FindPlanePoints(const Body<T>& body1, const Body<T>& body2,
+                       const ContactSettings<T>& settings, T dt) {
+    const Body<T>& plane_body = plane_is_body1_ ? body1 : body2;
+    const Body<T>& other_body = plane_is_body1_ ? body2 : body1;
+    const ContactShape<T>& plane = plane_is_body1_ ? shape1_ : shape2_;
+    const ContactShape<T>& other = plane_is_body1_ ? shape2_ : shape1_;
+    const Vec3<T> n_p = ShapeRotation(plane_body, plane) * Vec3<T>::UnitY();
+    const Vec3<T> origin = ShapeCentre(plane_body, plane);
+    const PlaneCandidates<T> candidates = PlaneContactCandidates<T>(
+        n_p, other, ShapeCentre(other_body, other), ShapeRotation(other_body, other));
+    std::array<T, kMaxContactPoints> phi{};
+    T deepest = std::numeric_limits<T>::infinity();
+    for (int j = 0; j < candidates.count; ++j) {
+      phi[j] = n_p.dot(candidates.on_shape[j] - origin);
+      deepest = std::min(deepest, phi[j]);
+    }
+    const Vec3<T> normal = plane_is_body1_ ? n_p : Vec3<T>(-n_p);
+    const T speculative = SpeculativeDistance(body1, body2, normal, settings, dt);
+    const T keep = speculative + T(0.001);  // Jolt's 1 mm tolerance
+    if (!(deepest < speculative)) return;
+
+    normal_direction_ = normal;
+    for (int j = 0; j < candidates.count; ++j) {
+      if (!(phi[j] < keep)) continue;
+      const Vec3<T> on_shape = candidates.on_shape[j];
+      const Vec3<T> on_plane = on_shape - phi[j] * n_p;
+      point1_[count_] = plane_is_body1_ ? on_plane : on_shape;
+      point2_[count_] = plane_is_body1_ ? on_shape : on_plane;
+      ++count_;
+    }
+  }
+
+  // Two spheres or capsules: the closest points s1, s2 of the cores, n from
+  // s1 to s2, p1 = s1 + r1 n, p2 = s2 − r2 n; the one point exists when
+  // L − r1 − r2 < D.
+  void FindRoundPoint(const Body<T>& body1, const Body<T>& body2,
+                      const ContactSettings<T>& settings, T dt) {
+    const RoundCore<T> core1 =
+        MakeRoundCore(shape1_, ShapeCentre(body1, shape1_), ShapeRotation(body1, shape1_));
+    const RoundCore<T> core2 =
+        MakeRoundCore(shape2_, ShapeCentre(body2, shape2_), ShapeRotation(body2, shape2_));
+    const RoundCandidate<T> candidate =
+        RoundContactCandidate(core1, core2);
+    if (!(candidate.distance - core1.radius - core2.radius <
+          SpeculativeDistance(body1, body2, candidate.normal, settings, dt))) {
+      return;
+    }
+    normal_direction_ = candidate.normal;
+    point1_[0] = candidate.s1 + core1.radius * candidate.normal;
+    point2_[0] = candidate.s2 - core2.radius * candidate.normal;
+    count_ = 1;
+  }
+
   // One row: ċ = axis·(v2 − v1) + angular2·ω2 − angular1·ω1.
   struct Row {
     Vec3<T> axis = Vec3<T>::Zero();  // zero for the angular row
@@ -537,9 +786,10 @@ class ContactConstraint {
   }
 
   std::size_t body1_, body2_;
-  bool plane_is_body1_;
-  ContactShape<T> plane_;
-  ContactShape<T> other_;
+  ContactShape<T> shape1_;  // body 1's
+  ContactShape<T> shape2_;  // body 2's
+  bool plane_is_body1_;     // plane pairs: which body has the plane
+  bool round_pair_ = false;  // two spheres or capsules (else a plane pair)
   T friction_;     // μ = sqrt(μ1 μ2)
   T restitution_;  // e = max(e1, e2)
 

@@ -326,8 +326,9 @@ class World {
   // The contact slots of docs/contacts.md: every pair i < j of bodies with
   // shapes whose groups and masks meet, with at least one dynamic body, not
   // joined by a constraint (unless either shape collides with joined bodies).
-  // Such a pair must be a plane with a sphere, capsule or box; a plane is on a
-  // static body.
+  // Such a pair must be a plane with a sphere, capsule or box, or two spheres
+  // or capsules (sphere–sphere, sphere–capsule, capsule–capsule); a plane is
+  // on a static body.
   void MakeContacts(const Scene& scene) {
     const std::vector<BodySettings>& settings = scene.bodies();
     for (std::size_t i = 0; i < settings.size(); ++i) {
@@ -345,11 +346,6 @@ class World {
           },
           constraint);
     }
-    const auto is_plane_pair = [](ShapeType plane, ShapeType other) {
-      return plane == ShapeType::kPlane &&
-             (other == ShapeType::kSphere || other == ShapeType::kCapsule ||
-              other == ShapeType::kBox);
-    };
     for (std::size_t i = 0; i < settings.size(); ++i) {
       for (std::size_t j = i + 1; j < settings.size(); ++j) {
         const ShapeSettings& shape_i = settings[i].shape;
@@ -364,12 +360,12 @@ class World {
             !shape_j.collide_with_joined) {
           continue;
         }
-        if (!is_plane_pair(shape_i.type, shape_j.type) &&
-            !is_plane_pair(shape_j.type, shape_i.type)) {
+        if (!ContactConstraint<T>::Supports(shape_i.type, shape_j.type)) {
           throw std::invalid_argument(
               "reference::World: " + BodyName(scene, i) + " and " + BodyName(scene, j) +
               " collide but their pair of shapes is not supported (only a plane with a "
-              "sphere, capsule or box): put them in collision groups that do not meet");
+              "sphere, capsule or box, and spheres and capsules with each other): put them "
+              "in collision groups that do not meet");
         }
         contacts_.emplace_back(i, j, shape_i, shape_j);
       }
@@ -608,7 +604,8 @@ class World {
     // slot has a dynamic body (MakeContacts), so all are solved.
     const ContactSettings<T> contact_settings{
         T(settings.speculative_contact_distance), T(settings.penetration_slop),
-        T(settings.max_penetration_distance), T(settings.min_velocity_for_restitution)};
+        T(settings.max_penetration_distance), T(settings.min_velocity_for_restitution),
+        settings.speculative_contacts_from_velocity};
     const Vec3<T> gravity = ToVec3<T>(settings.gravity);
 
     for_each_solved([&](auto& c, Body<T>& body1, Body<T>& body2) {

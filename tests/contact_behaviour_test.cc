@@ -4,8 +4,9 @@
 // stepper, named after it; see tests/stepper_adapters.h; the batch runs 20
 // identical worlds and checks bitwise that all agree with world 0, which the
 // assertions read). Jolt's own contact tests (../shared/docs/jolt-contacts.md
-// §12) where they apply to a plane, and physics Jolt does not test (an
-// incline, a rolling sphere, resting capsules and boxes).
+// §12) where they apply to a plane or to spheres and capsules together, and
+// physics Jolt does not test (an incline, a rolling sphere, resting capsules
+// and boxes, stacks of spheres and capsules, momentum in a glancing hit).
 //
 // The manifolds of these scenes (point counts and points, normal impulses,
 // slot order and filter) and the scenes the reference refuses are checked on
@@ -632,6 +633,224 @@ TEST_P(ContactBehaviourTest, PlaneAsBodyTwoHoldsTheSphere) {
   const std::unique_ptr<Stepper> world = Make(SphereOnLaterFloorScene());
   Simulate(*world, Settings(), 1.0);
   EXPECT_AT_MOST("position", Distance(world->Position(0), 0.0, 1.0, 0.0), 1e-5);
+}
+
+// ------------------------------------------- spheres and capsules together
+
+// Jolt's CollisionElasticDynamic (×3), zero gravity: two equal unit spheres
+// meet head on at 5 and −10 m/s (tests/contact_test_scenes.h,
+// HeadOnSpheresScene). With e = 1 a head-on elastic collision of equal
+// masses exchanges the velocities (Jolt's 1e-5); with e = 0 they move on
+// together at the mean velocity, −2.5 m/s (momentum m·5 − m·10 conserved; the
+// speculative row first lets the 0.01 m gap close, the next substep stops the
+// rest). Either way there is no spin (the normal goes through both centres).
+// After the hit substep the spheres keep their velocities: with e = 1 they
+// fly apart (x = x0 + 8·v_before·dt + (N − 8)·v_after·dt after N substeps:
+// the bounce is decided at the start of substep 8 and the bodies cover that
+// substep at the new velocities); with e = 0 they stay touching.
+void CollisionElasticDynamicCase(const StepperKind& kind, double delta_time, int substeps,
+                                 float restitution) {
+  SCOPED_TRACE("delta_time " + std::to_string(delta_time) + ", substeps " +
+               std::to_string(substeps) + ", e " + std::to_string(restitution));
+  const Scene scene = HeadOnSpheresScene(restitution);
+  const std::unique_ptr<Stepper> world = kind.make(scene);
+  const double x1 = world->Position(0).x(), x2 = world->Position(1).x();
+  StepSettings settings = Settings(delta_time, substeps);
+  settings.gravity = {0.0f, 0.0f, 0.0f};
+  Simulate(*world, settings, 1.0);
+  const double after1 = restitution > 0.0f ? kHeadOnV2 : 0.5 * (kHeadOnV1 + kHeadOnV2);
+  const double after2 = restitution > 0.0f ? kHeadOnV1 : 0.5 * (kHeadOnV1 + kHeadOnV2);
+  // 1e-5 m/s (Jolt's): one row through the centres, float roundings on 10 m/s.
+  EXPECT_AT_MOST("velocity_1", Distance(world->LinearVelocity(0), after1, 0.0, 0.0), 1e-5);
+  EXPECT_AT_MOST("velocity_2", Distance(world->LinearVelocity(1), after2, 0.0, 0.0), 1e-5);
+  EXPECT_AT_MOST("angular_velocity_1", world->AngularVelocity(0).norm(), 1e-5);
+  EXPECT_AT_MOST("angular_velocity_2", world->AngularVelocity(1).norm(), 1e-5);
+  if (restitution > 0.0f) {
+    // The world's substep is float(delta_time)/substeps = float(1/60) for all
+    // three (halving is exact). Float: 60 rounded additions at |x| < 16
+    // (half-spacing 9.5e-7) stay under 6e-5; double: exact to 1e-9.
+    const double dt = double(float(delta_time)) / substeps;
+    const int n = int(std::lround(1.0 / dt)), hit = kHeadOnHitSubstep;
+    const double expected1 = x1 + hit * kHeadOnV1 * dt + (n - hit) * after1 * dt;
+    const double expected2 = x2 + hit * kHeadOnV2 * dt + (n - hit) * after2 * dt;
+    const double tolerance = kind.is_double ? 1e-9 : 6e-5;
+    EXPECT_AT_MOST("position_1", Distance(world->Position(0), expected1, 0.0, 0.0), tolerance);
+    EXPECT_AT_MOST("position_2", Distance(world->Position(1), expected2, 0.0, 0.0), tolerance);
+  }
+}
+
+TEST_P(ContactBehaviourTest, CollisionElasticDynamic) {
+  for (const float e : {1.0f, 0.0f}) {
+    CollisionElasticDynamicCase(GetParam(), 1.0 / 60.0, 1, e);
+    CollisionElasticDynamicCase(GetParam(), 2.0 / 60.0, 2, e);
+    CollisionElasticDynamicCase(GetParam(), 4.0 / 60.0, 4, e);
+  }
+}
+
+// Jolt's MinVelocityForRestitution with two spheres, zero gravity: a unit
+// sphere at 1 m/s touches an equal one at rest, e = 1. Threshold 0.99 m/s
+// (1 m/s exceeds it): elastic, the velocities are exchanged; 1.01 m/s: no
+// bounce, the approach is stopped and both move on at 0.5 m/s. Checked after
+// the first step and again 1 s later (nothing else acts). Jolt's 1e-6: one
+// row, a few float roundings of 1 m/s.
+TEST_P(ContactBehaviourTest, MinVelocityForRestitutionSpheres) {
+  for (const float threshold : {0.99f, 1.01f}) {
+    SCOPED_TRACE(threshold);
+    const std::unique_ptr<Stepper> world = Make(TouchingSpheresScene(1.0));
+    StepSettings settings = ZeroGravity();
+    settings.min_velocity_for_restitution = threshold;
+    const bool bounces = threshold < 1.0f;
+    const double after1 = bounces ? 0.0 : 0.5, after2 = bounces ? 1.0 : 0.5;
+    world->Step(settings);
+    EXPECT_AT_MOST("velocity_1", Distance(world->LinearVelocity(0), after1, 0.0, 0.0), 1e-6);
+    EXPECT_AT_MOST("velocity_2", Distance(world->LinearVelocity(1), after2, 0.0, 0.0), 1e-6);
+    Simulate(*world, settings, 1.0);
+    EXPECT_AT_MOST("velocity_1_later", Distance(world->LinearVelocity(0), after1, 0.0, 0.0),
+                   1e-6);
+    EXPECT_AT_MOST("velocity_2_later", Distance(world->LinearVelocity(1), after2, 0.0, 0.0),
+                   1e-6);
+  }
+}
+
+// A 3-body stack (SphereOnCapsuleScene): a capsule lying along X on the floor
+// and a sphere exactly above its middle; it stays as placed for 5 s. The
+// balance is unstable across the capsule (a ball on a free roller: in the YZ
+// plane V = −m_s g (R + r) β²/2 for the sphere's angle β on the roller, and
+// the motion grows as e^{λt}, λ ≈ 3.6 s⁻¹ with these masses). It holds because
+// the scene is exactly mirror-symmetric about z = 0 with nothing across it:
+// the capsule's axis is exactly along X (kYToX is exact in float), every
+// centre, normal and point has z = 0, and products with exact zeros stay zero
+// in any arithmetic; a stepper that made up a z component would fail here.
+// At rest from the first step, 1e-5 m / 1e-5 m/s / 1e-5 rad: the two contacts
+// hold both weights, the solver's residual is as the lying capsule's alone
+// (CapsuleLyingRests).
+TEST_P(ContactBehaviourTest, SphereOnCapsuleStaysPut) {
+  const std::unique_ptr<Stepper> world = Make(SphereOnCapsuleScene());
+  const Quatd capsule_rotation = world->Rotation(1);
+  Simulate(*world, Settings(), 5.0);
+  EXPECT_AT_MOST("capsule_position", Distance(world->Position(1), 0.0, kStackCapsuleY, 0.0), 1e-5);
+  EXPECT_AT_MOST("sphere_position", Distance(world->Position(2), 0.0, kStackSphereY, 0.0), 1e-5);
+  EXPECT_AT_MOST("capsule_rotation", AngleBetween(world->Rotation(1), capsule_rotation), 1e-5);
+  EXPECT_AT_MOST("sphere_rotation", AngleBetween(world->Rotation(2), Quatd::Identity()), 1e-5);
+  for (const std::size_t body : {std::size_t(1), std::size_t(2)}) {
+    const std::string name = body == 1 ? "capsule" : "sphere";
+    EXPECT_AT_MOST(name + "_velocity", world->LinearVelocity(body).norm(), 1e-5);
+    EXPECT_AT_MOST(name + "_angular_velocity", world->AngularVelocity(body).norm(), 1e-5);
+  }
+}
+
+// Two capsules crossing at right angles (CrossedCapsulesScene): one lying
+// along X on the floor, the other along Z across its middle. Placed
+// symmetrically they stay put, but this balance is unstable: the upper
+// capsule is a plank across a free roller (a rola-bola board). In the YZ
+// plane, with ψ the lower capsule's rolling angle and θ the upper one's tilt,
+// rolling contacts give the potential V = m_u g ((R − t)/2 θ² − R ψ θ) (R, t
+// = 0.3 m the radii), a saddle (det = −(m_u g R)² < 0); with the scene's masses
+// and inertias (M_ψψ = 5 m R² + I_axis, M_θθ = m t² + I_across, M_ψθ = 2 m R t)
+// the linearised motion grows as e^{λt}, λ = 2.25 s⁻¹. An asymmetry at float
+// rounding (1e-8: e.g. a target contracting a·b − c·d into an FMA, which
+// rounds differently on the two sides of the mirror) grows ×9.5 in 1 s but
+// ×8e4 in 5 s, so this holds 1 s (5 s would need millimetres). At rest from
+// the first step, 1e-5 m / 1e-5 m/s / 1e-5 rad: the first step's Gauss-Seidel
+// (no impulses yet, the weight shared by two floor points solved one after
+// the other) sinks the pair a few µm, which the warm start then holds.
+TEST_P(ContactBehaviourTest, CrossedCapsulesStayPut) {
+  const std::unique_ptr<Stepper> world = Make(CrossedCapsulesScene());
+  const Quatd lower_rotation = world->Rotation(1), upper_rotation = world->Rotation(2);
+  Simulate(*world, Settings(), 1.0);
+  EXPECT_AT_MOST("lower_position", Distance(world->Position(1), 0.0, kLowerCapsuleY, 0.0), 1e-5);
+  EXPECT_AT_MOST("upper_position", Distance(world->Position(2), 0.0, kUpperCapsuleY, 0.0), 1e-5);
+  EXPECT_AT_MOST("lower_rotation", AngleBetween(world->Rotation(1), lower_rotation), 1e-5);
+  EXPECT_AT_MOST("upper_rotation", AngleBetween(world->Rotation(2), upper_rotation), 1e-5);
+  for (const std::size_t body : {std::size_t(1), std::size_t(2)}) {
+    const std::string name = body == 1 ? "lower" : "upper";
+    EXPECT_AT_MOST(name + "_velocity", world->LinearVelocity(body).norm(), 1e-5);
+    EXPECT_AT_MOST(name + "_angular_velocity", world->AngularVelocity(body).norm(), 1e-5);
+  }
+}
+
+// A glancing hit (GlancingSphereCapsuleScene): zero gravity, no friction, e =
+// 0.5; a sphere flying at 6 m/s strikes a free capsule off its middle and at
+// an angle. Contact impulses come in equal and opposite pairs, so the total
+// linear momentum m_s v_s + m_c v_c stays m_s·(0, 0, −6) through the hit and
+// after (1 s). Tolerance relative to |p0|: in float each applied impulse Δ
+// changes the momentum by ~Δ·(m·m⁻¹ − 1) plus the velocities' rounding,
+// ~1e-7 of |p0| per application over a few tens of them: 1e-5; in double
+// 1e-12. That a hit happened and was glancing: the sphere leaves with an
+// upward velocity, the capsule moves and spins.
+TEST_P(ContactBehaviourTest, GlancingSphereCapsuleConservesMomentum) {
+  const Scene scene = GlancingSphereCapsuleScene();
+  const double capsule_mass = scene.bodies()[0].mass, sphere_mass = scene.bodies()[1].mass;
+  const std::unique_ptr<Stepper> world = Make(scene);
+  const Vec3d p0 = capsule_mass * world->LinearVelocity(0) + sphere_mass * world->LinearVelocity(1);
+  const double tolerance = (GetParam().is_double ? 1e-12 : 1e-5) * p0.norm();
+  double worst = 0.0;
+  for (int i = 0; i < 60; ++i) {
+    world->Step(ZeroGravity());
+    const Vec3d p = capsule_mass * world->LinearVelocity(0) + sphere_mass * world->LinearVelocity(1);
+    worst = std::max(worst, (p - p0).norm());
+  }
+  EXPECT_AT_MOST("momentum_error", worst, tolerance);
+  // Deflected up and sideways; the capsule pushed away and turning.
+  EXPECT_GT(world->LinearVelocity(1).y(), 0.5);
+  EXPECT_GT(capsule_mass * world->LinearVelocity(0).norm(), 0.1 * p0.norm());
+  EXPECT_GT(world->AngularVelocity(0).norm(), 0.1);
+}
+
+// ------------------------- speculative distance from velocity (beyond Jolt)
+
+// A unit sphere and a tumbling box dropped from 1 km (hitting at 140 m/s,
+// 2.3 m per step) and from 2 m. With Jolt's fixed speculative distance each
+// is caught only once inside the floor, and the position phase leaves it at
+// the slop (more than 1 mm deep, at most slop + 1 mm). With
+// speculative_contacts_from_velocity the contact is there a step early and
+// each lands on the surface: never more than 1 mm deep (the resting
+// target, which float rounding of the speculative bias s/dt meets by far).
+TEST_P(ContactBehaviourTest, SpeculativeContactsFromVelocityLandOnTheSurface) {
+  for (const double height : {1000.0, 2.0}) {
+    for (const bool from_velocity : {false, true}) {
+      Scene scene;
+      scene.AddBody(Floor());
+      // Each meets the floor (group 1) only, not the other.
+      BodySettings sphere = Sphere(1.0f, {0.0f, float(height), 0.0f});
+      sphere.shape.collision_group = 2;
+      sphere.shape.collision_mask = 1;
+      scene.AddBody(sphere);
+      BodySettings box = Box({0.5f, 0.5f, 0.5f}, {5.0f, float(height), 0.0f});
+      box.angular_velocity = {2.0f, 0.0f, 1.0f};
+      box.shape.collision_group = 2;
+      box.shape.collision_mask = 1;
+      scene.AddBody(box);
+      const std::unique_ptr<Stepper> world = Make(scene);
+      StepSettings settings;
+      settings.speculative_contacts_from_velocity = from_velocity;
+      double deepest_sphere = 0.0;
+      const int steps = height > 10.0 ? 1000 : 300;
+      for (int i = 0; i < steps; ++i) {
+        world->Step(settings);
+        deepest_sphere = std::max(deepest_sphere, 1.0 - world->Position(1).y());
+      }
+      const std::string tag = std::string(from_velocity ? "from_velocity" : "fixed") + "_" +
+                              std::to_string(int(height));
+      const double sphere_depth = 1.0 - world->Position(1).y();
+      // The box rests on a face: its lowest corner's depth.
+      const Quatd q = world->Rotation(2);
+      double lowest = 1e9;
+      for (int corner = 0; corner < 8; ++corner) {
+        const Vec3d local((corner & 1) ? 0.5 : -0.5, (corner & 2) ? 0.5 : -0.5,
+                          (corner & 4) ? 0.5 : -0.5);
+        lowest = std::min(lowest, (world->Position(2) + q * local).y());
+      }
+      if (from_velocity) {
+        EXPECT_AT_MOST(tag + "_sphere_deepest", deepest_sphere, 1e-3);
+        EXPECT_AT_MOST(tag + "_box_depth", -lowest, 1e-3);
+      } else if (height > 10.0) {
+        EXPECT_GT(sphere_depth, 1e-3) << tag;
+        EXPECT_AT_MOST(tag + "_sphere_depth", sphere_depth, kSlop + 1e-3);
+      }
+      EXPECT_AT_MOST(tag + "_sphere_speed", world->LinearVelocity(1).norm(), 1e-3);
+    }
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Steppers, ContactBehaviourTest, ::testing::ValuesIn(AllStepperKinds()),

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -33,7 +34,7 @@ BodySettings Ground() {
 }
 
 // Dynamic shapes here meet the ground (group 1) but not each other (group 2,
-// mask 1): contacts between two moving shapes are not collided yet.
+// mask 1), so that each test's slots are the ones it names.
 BodySettings Ball(const std::string& name, Float3 position) {
   BodySettings ball;
   ball.name = name;
@@ -142,17 +143,24 @@ TEST(ContactRefusalTest, BadShapesAndPairsAreNamed) {
   EXPECT_THAT(plane, HasSubstr("shape.type"));
   EXPECT_THAT(plane, HasSubstr("only a static body"));
 
-  Scene two_balls;
-  two_balls.AddBody(Ball("left", {0, 0, 0}));
-  two_balls.AddBody(Ball("right", {2, 0, 0}));
-  two_balls.bodies()[0].shape.collision_mask = two_balls.bodies()[1].shape.collision_mask = 2;
-  const std::string pair = BuildRefusal(two_balls);
+  // A pair not collided yet: a sphere and a box.
+  Scene ball_and_box;
+  ball_and_box.AddBody(Ball("left", {0, 0, 0}));
+  ball_and_box.AddBody(Ball("right", {2, 0, 0}));
+  ball_and_box.bodies()[1].shape.type = ShapeType::kBox;
+  ball_and_box.bodies()[0].shape.collision_mask = ball_and_box.bodies()[1].shape.collision_mask = 2;
+  const std::string pair = BuildRefusal(ball_and_box);
   EXPECT_THAT(pair, HasSubstr("contact body #0 'left' / body #1 'right'"));
-  EXPECT_THAT(pair, HasSubstr("sphere with a sphere"));
+  EXPECT_THAT(pair, HasSubstr("sphere with a box"));
   EXPECT_THAT(pair, HasSubstr("collision groups"));
   // The way out the message names works.
-  two_balls.bodies()[1].shape.collision_group = 4;
-  EXPECT_EQ(BuildRefusal(two_balls), "");
+  ball_and_box.bodies()[1].shape.collision_group = 4;
+  EXPECT_EQ(BuildRefusal(ball_and_box), "");
+  // Spheres and capsules meet each other.
+  Scene balls = ball_and_box;
+  balls.bodies()[1].shape.type = ShapeType::kCapsule;
+  balls.bodies()[1].shape.collision_group = 2;
+  EXPECT_THAT(Batch(balls, 1).Plan(), HasSubstr("sphere-capsule, up to 1 point(s)"));
 
   const auto refusal_of = [](const char* field, auto edit) {
     Scene scene;
@@ -209,6 +217,53 @@ TEST(ContactRefusalTest, BadStepSettingsAreRefusedBeforeAnythingMoves) {
   refusal("min_velocity_for_restitution",
           [](StepSettings& s) { s.min_velocity_for_restitution = -1.0f; });
   refusal("solver", [](StepSettings& s) { s.solver = JointSolver::kExact; });
+}
+
+// GetContacts: a box resting on the ground carries m g on its 4 points; a box
+// sliding along X feels mu m g of friction against its motion; a ball in
+// the air touches nothing.
+TEST(ContactReadoutTest, ForcesAreWhatTheBodiesFeel) {
+  Scene scene;
+  scene.AddBody(Ground());
+  BodySettings resting = Ball("resting box", {0, 0.5f, 0});
+  resting.mass = 2.0f;
+  resting.shape.type = ShapeType::kBox;
+  scene.AddBody(resting);
+  BodySettings sliding = Ball("sliding box", {3, 0.5f, 0});
+  sliding.shape.type = ShapeType::kBox;
+  sliding.linear_velocity = {4.0f, 0.0f, 0.0f};
+  scene.AddBody(sliding);
+  scene.AddBody(Ball("flying ball", {6, 5, 0}));
+  Batch batch(scene, 3);
+  ASSERT_EQ(batch.ContactSlotCount(), 3u);
+  const Batch::ContactSlot first = batch.GetContactSlot(0);
+  EXPECT_EQ(first.body1, 0u);
+  EXPECT_EQ(first.body2, 1u);
+  EXPECT_EQ(first.max_points, 4u);
+  EXPECT_THROW(batch.GetContactSlot(3), std::out_of_range);
+  std::vector<float> contacts(3 * 3 * Batch::kContactFloats);
+  batch.GetContacts(contacts);
+  for (const float x : contacts) EXPECT_EQ(x, 0.0f) << "before the first step";
+  for (int step = 0; step < 10; ++step) batch.Step(StepSettings{});
+  batch.GetContacts(contacts);
+  const float g = 9.81f, mu = 0.2f;  // sqrt(0.2 * 0.2): Jolt's default frictions
+  for (std::size_t w = 0; w < 3; ++w) {
+    const float* rest = contacts.data() + w * 3 * Batch::kContactFloats;
+    const float* slide = rest + Batch::kContactFloats;
+    const float* fly = slide + Batch::kContactFloats;
+    // The resting box: 4 points, normal force m g up (float rounding of the
+    // impulses over 10 passes: 1e-4 relative).
+    EXPECT_EQ(rest[0], 4.0f);
+    EXPECT_NEAR(rest[1], 2.0f * g, 2e-3f);
+    EXPECT_NEAR(rest[3], 2.0f * g, 2e-3f);
+    EXPECT_NEAR(rest[6], 1.0f, 1e-6f);  // normal +Y (ground is body 1)
+    // The sliding box (still sliding after 1/6 s: 4 - mu g / 6 = 3.67 m/s):
+    // friction mu m g against +X, normal m g.
+    EXPECT_NEAR(slide[1], g, 1e-3f);
+    EXPECT_NEAR(slide[2], -mu * g, 1e-3f);
+    EXPECT_NEAR(slide[4], 0.0f, 1e-4f);
+    for (std::size_t i = 0; i < Batch::kContactFloats; ++i) EXPECT_EQ(fly[i], 0.0f) << i;
+  }
 }
 
 // Every world of a block at its own height and speed: some lanes touch,

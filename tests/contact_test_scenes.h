@@ -86,6 +86,12 @@ inline BodySettings Capsule(float radius, float half_height, Float3 position) {
   return body;
 }
 
+// Rotations by ±120° about (1, 1, 1)/√3, which permute the axes: exact in
+// float (components ±0.5), so a capsule turned by one has its axis exactly
+// along a world axis (RotationAbout(..., π/2) is off by a float rounding).
+inline constexpr Quaternion kYToX{-0.5f, -0.5f, -0.5f, 0.5f};  // body Y along world +X
+inline constexpr Quaternion kYToZ{0.5f, 0.5f, 0.5f, 0.5f};     // body Y along world +Z
+
 inline Quaternion RotationAbout(Float3 axis, double angle) {
   const double s = std::sin(angle / 2.0);
   return {float(axis[0] * s), float(axis[1] * s), float(axis[2] * s), float(std::cos(angle / 2.0))};
@@ -298,6 +304,93 @@ inline Scene SphereOnLaterFloorScene() {
   Scene scene;
   scene.AddBody(Sphere(1.0f, {0.0f, 1.0f, 0.0f}));
   scene.AddBody(Floor());
+  return scene;
+}
+
+// ------------------------------------------- spheres and capsules together
+
+// Jolt's CollisionElasticDynamic, zero gravity: two unit spheres on the X axis
+// moving towards each other at 5 m/s (body 0, x < 0) and −10 m/s (body 1), both
+// with restitution e. Their surfaces start kHeadOnGap apart: at 15 m/s the gap
+// is 0.01 m (inside the speculative distance) at the start of substep 8 (from
+// 0; 1/60 s each) and 0.26 m at the start of substep 7, so they meet in
+// substep 8.
+inline constexpr double kHeadOnGap = 2.01, kHeadOnV1 = 5.0, kHeadOnV2 = -10.0;
+inline constexpr int kHeadOnHitSubstep = 8;
+inline Scene HeadOnSpheresScene(float restitution) {
+  Scene scene;
+  const float x = float(1.0 + kHeadOnGap / 2.0);
+  BodySettings left = Sphere(1.0f, {-x, 0.0f, 0.0f});
+  BodySettings right = Sphere(1.0f, {x, 0.0f, 0.0f});
+  left.linear_velocity = {float(kHeadOnV1), 0.0f, 0.0f};
+  right.linear_velocity = {float(kHeadOnV2), 0.0f, 0.0f};
+  left.shape.restitution = right.shape.restitution = restitution;
+  scene.AddBody(left);
+  scene.AddBody(right);
+  return scene;
+}
+
+// Jolt's MinVelocityForRestitution with two spheres: unit spheres touching at
+// the origin (centres x = ∓1), e = 1, body 0 moving at `speed` along +X into
+// body 1 at rest; zero gravity.
+inline Scene TouchingSpheresScene(double speed) {
+  Scene scene;
+  BodySettings moving = Sphere(1.0f, {-1.0f, 0.0f, 0.0f});
+  BodySettings resting = Sphere(1.0f, {1.0f, 0.0f, 0.0f});
+  moving.linear_velocity = {float(speed), 0.0f, 0.0f};
+  moving.shape.restitution = resting.shape.restitution = 1.0f;
+  scene.AddBody(moving);
+  scene.AddBody(resting);
+  return scene;
+}
+
+// A 3-body stack: the floor (0), a capsule (r 0.3, h 0.5) lying along X on it
+// (1, centre y = 0.3), a sphere (r 0.25) on top exactly above the capsule's
+// middle (2, centre y = 0.3 + 0.3 + 0.25 = 0.85).
+inline constexpr double kStackCapsuleY = 0.3, kStackSphereY = 0.85;
+inline Scene SphereOnCapsuleScene() {
+  Scene scene;
+  scene.AddBody(Floor());
+  BodySettings capsule = Capsule(0.3f, 0.5f, {0.0f, float(kStackCapsuleY), 0.0f});
+  capsule.rotation = kYToX;
+  scene.AddBody(capsule);
+  scene.AddBody(Sphere(0.25f, {0.0f, float(kStackSphereY), 0.0f}));
+  return scene;
+}
+
+// Two capsules (r 0.3, h 0.5) crossing at right angles: one lying along X on
+// the floor (1, centre y = 0.3), the other along Z resting across its middle
+// (2, centre y = 0.9).
+inline constexpr double kLowerCapsuleY = 0.3, kUpperCapsuleY = 0.9;
+inline Scene CrossedCapsulesScene() {
+  Scene scene;
+  scene.AddBody(Floor());
+  BodySettings lower = Capsule(0.3f, 0.5f, {0.0f, float(kLowerCapsuleY), 0.0f});
+  lower.rotation = kYToX;
+  scene.AddBody(lower);
+  BodySettings upper = Capsule(0.3f, 0.5f, {0.0f, float(kUpperCapsuleY), 0.0f});
+  upper.rotation = kYToZ;
+  scene.AddBody(upper);
+  return scene;
+}
+
+// Zero gravity, no friction (μ = 0 on both), e = 0.5: a capsule (r 0.3, h 0.5)
+// at rest along X at the origin (0) and a sphere (r 0.25) flying at 6 m/s
+// along −Z (1), 0.35 m above the capsule's axis and 0.3 m along it from the
+// middle: it strikes the cylinder 0.55 m from the axis at an angle (the normal
+// (0, 0.35, 0.42)/0.55 at the hit), spinning the capsule up.
+inline Scene GlancingSphereCapsuleScene() {
+  Scene scene;
+  BodySettings capsule = Capsule(0.3f, 0.5f, {0.0f, 0.0f, 0.0f});
+  capsule.rotation = kYToX;
+  BodySettings sphere = Sphere(0.25f, {0.3f, 0.35f, 1.5f});
+  sphere.linear_velocity = {0.0f, 0.0f, -6.0f};
+  for (BodySettings* body : {&capsule, &sphere}) {
+    body->shape.friction = 0.0f;
+    body->shape.restitution = 0.5f;
+  }
+  scene.AddBody(capsule);
+  scene.AddBody(sphere);
   return scene;
 }
 

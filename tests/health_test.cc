@@ -68,9 +68,15 @@ struct Injection {
 // (mid-block) and 39 (last real world, next to padding) get the bad data.
 const std::set<std::size_t> kBadWorlds = {0, 17, 39};
 
+// The first dynamic body free in every degree of freedom: a NaN force or
+// torque on a locked axis (the hopper's torso turns only about Z) is flagged
+// as input but never reaches the state, so the injections need a free body.
 std::size_t FirstDynamicBody(const Scene& scene) {
   for (std::size_t b = 0; b < scene.bodies().size(); ++b) {
-    if (scene.bodies()[b].motion_type == MotionType::kDynamic) return b;
+    if (scene.bodies()[b].motion_type == MotionType::kDynamic &&
+        scene.bodies()[b].allowed_dofs == AllowedDofs::kAll) {
+      return b;
+    }
   }
   return 0;
 }
@@ -213,7 +219,7 @@ TEST_P(HealthTest, BadWorldsAreFlaggedAndEveryOtherWorldKeepsItsBits) {
 INSTANTIATE_TEST_SUITE_P(
     ReferenceScenes, HealthTest,
     ::testing::Combine(::testing::Values("cartpole", "chain16", "rackpinion", "geartrain", "ragdoll",
-                                         "box-drop", "sphere-roll"),
+                                         "box-drop", "sphere-roll", "pile", "hopper"),
                        ::testing::ValuesIn(SupportedStepTargets())),
     [](const auto& info) {
       std::string name = std::get<0>(info.param) + "_" + hwy::TargetName(std::get<1>(info.param));

@@ -2,7 +2,8 @@
 // docs/contacts.md), in float and double, read through the reference's contact
 // accessors: the manifolds (point counts, points, normal, separation), the
 // normal impulses, which pairs make slots and in what order, and the scenes
-// the reference refuses.
+// the reference refuses; for spheres and capsules with each other, the one
+// point against the geometry of the closest points of their cores.
 //
 // What the bodies do in these scenes (Jolt's own contact tests from
 // ../shared/docs/jolt-contacts.md §12 where they apply to a plane, an incline,
@@ -25,6 +26,7 @@
 #include <stdexcept>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "manyworlds/batch.h"
 #include "manyworlds/scene.h"
@@ -379,6 +381,509 @@ TYPED_TEST(ReferenceContactTest, BoxKeepsCornersWithinSpeculativeDistancePlusTol
   }
 }
 
+// ------------------------------------------ spheres and capsules: the points
+
+// Geometry of docs/contacts.md "Points of a pair of spheres and capsules": two
+// bodies in zero gravity stepped once; the slot's manifold (found at the start
+// of that step, from the scene's poses) is read. The expected points come
+// from the shapes' geometry: the closest points s1, s2 of the cores (by hand,
+// or for general skew segments by a brute-force search), n = (s2 − s1)/L,
+// p1 = s1 + r1 n, p2 = s2 − r2 n, separation L − r1 − r2. Tolerance 1e-6 m: a
+// few float roundings of lengths below 2 m (a normalisation, a clamp, a
+// projection); in double it is far tighter.
+constexpr double kPointTolerance = 1e-6;
+
+using Vec3d = Vec3<double>;
+
+Vec3d ToVec3d(const Float3& v) { return Vec3d(v[0], v[1], v[2]); }
+
+// A body's shape centre and core segment a..b in world space, in double from
+// the scene's floats (a sphere: a = b = the centre).
+struct Segment {
+  Vec3d a, b;
+};
+Segment CoreOf(const BodySettings& body) {
+  const Quat<double> q = Quat<double>(body.rotation[3], body.rotation[0], body.rotation[1],
+                                      body.rotation[2])
+                             .normalized();
+  const Vec3d centre = ToVec3d(body.position) + q * ToVec3d(body.shape.position);
+  const Quat<double> shape_q =
+      q * Quat<double>(body.shape.rotation[3], body.shape.rotation[0], body.shape.rotation[1],
+                       body.shape.rotation[2]);
+  const double h = body.shape.type == ShapeType::kCapsule ? double(body.shape.half_height) : 0.0;
+  const Vec3d axis = shape_q * Vec3d::UnitY();
+  return {centre - h * axis, centre + h * axis};
+}
+
+// Closest points of two segments by brute force, independent of the doc's
+// formulas: |s2 − s1| is convex in (t1, t2) on [0, 1]², and so is its minimum
+// over t2 as a function of t1; nested ternary searches (200 halvings by 2/3
+// each: 1e-35) find the minimum. Only for segments far from parallel (the
+// minimum is then unique).
+std::pair<Vec3d, Vec3d> BruteClosestPoints(const Segment& s1, const Segment& s2) {
+  const auto point1 = [&](double t) { return Vec3d(s1.a + t * (s1.b - s1.a)); };
+  const auto point2 = [&](double t) { return Vec3d(s2.a + t * (s2.b - s2.a)); };
+  const auto best_t2 = [&](double t1) {
+    double lo = 0.0, hi = 1.0;
+    for (int i = 0; i < 200; ++i) {
+      const double m1 = lo + (hi - lo) / 3.0, m2 = hi - (hi - lo) / 3.0;
+      if ((point2(m1) - point1(t1)).norm() <= (point2(m2) - point1(t1)).norm()) {
+        hi = m2;
+      } else {
+        lo = m1;
+      }
+    }
+    return (lo + hi) / 2.0;
+  };
+  const auto distance = [&](double t1) { return (point2(best_t2(t1)) - point1(t1)).norm(); };
+  double lo = 0.0, hi = 1.0;
+  for (int i = 0; i < 200; ++i) {
+    const double m1 = lo + (hi - lo) / 3.0, m2 = hi - (hi - lo) / 3.0;
+    if (distance(m1) <= distance(m2)) {
+      hi = m2;
+    } else {
+      lo = m1;
+    }
+  }
+  const double t1 = (lo + hi) / 2.0;
+  return {point1(t1), point2(best_t2(t1))};
+}
+
+// The slot of a scene of just `body0` and `body1` (zero gravity, one step).
+template <class T>
+struct PairManifold {
+  int count = 0;
+  Vec3d normal, point1, point2;
+  double separation = 0.0;
+  int max_points = 0;
+};
+
+template <class T>
+PairManifold<T> ManifoldOf(const BodySettings& body0, const BodySettings& body1) {
+  Scene scene;
+  scene.AddBody(body0);
+  scene.AddBody(body1);
+  World<T> world(scene);
+  PairManifold<T> out;
+  EXPECT_EQ(world.contact_count(), 1u);
+  if (world.contact_count() != 1u) return out;
+  world.Step(ZeroGravity());
+  const ContactConstraint<T>& contact = world.contact(0);
+  out.count = contact.PointCount();
+  out.max_points = contact.MaxPointCount();
+  out.normal = contact.Normal().template cast<double>();
+  if (out.count > 0) {
+    out.point1 = contact.Point1(0).template cast<double>();
+    out.point2 = contact.Point2(0).template cast<double>();
+    out.separation = double(contact.Separation(0));
+  }
+  return out;
+}
+
+// The one point of cores' closest points s1, s2 (body order), radii r1, r2,
+// normal n (n = (s2 − s1)/L, or the fallback when L = 0).
+template <class T>
+void ExpectOnePoint(const PairManifold<T>& m, const Vec3d& s1, const Vec3d& s2, double r1,
+                    double r2, const Vec3d& n, double tolerance = kPointTolerance) {
+  ASSERT_EQ(m.count, 1);
+  EXPECT_EQ(m.max_points, 1);
+  EXPECT_LE((m.normal - n).norm(), tolerance) << m.normal.transpose() << " vs " << n.transpose();
+  const Vec3d p1 = s1 + r1 * n, p2 = s2 - r2 * n;
+  EXPECT_LE((m.point1 - p1).norm(), tolerance) << m.point1.transpose() << " vs " << p1.transpose();
+  EXPECT_LE((m.point2 - p2).norm(), tolerance) << m.point2.transpose() << " vs " << p2.transpose();
+  EXPECT_NEAR(m.separation, (s2 - s1).dot(n) - r1 - r2, tolerance);
+}
+
+template <class T>
+void ExpectOnePoint(const PairManifold<T>& m, const Vec3d& s1, const Vec3d& s2, double r1,
+                    double r2) {
+  ExpectOnePoint(m, s1, s2, r1, r2, Vec3d((s2 - s1).normalized()));
+}
+
+BodySettings SphereAt(double radius, Vec3d c) {
+  return Sphere(float(radius), {float(c.x()), float(c.y()), float(c.z())});
+}
+BodySettings CapsuleAt(double radius, double half_height, Vec3d c, Quaternion rotation) {
+  BodySettings capsule =
+      Capsule(float(radius), float(half_height), {float(c.x()), float(c.y()), float(c.z())});
+  capsule.rotation = rotation;
+  return capsule;
+}
+// Body Y along world −X: kYToX, then 180° about Z (exact in float).
+constexpr Quaternion kYToMinusX{0.5f, -0.5f, 0.5f, 0.5f};
+constexpr Quaternion kIdentity{0.0f, 0.0f, 0.0f, 1.0f};
+
+// Sphere–sphere: the point on the line of centres, kept while the surfaces
+// are less than D = 0.02 m apart; n from body 1 (the lower index) to body 2.
+TYPED_TEST(ReferenceContactTest, SphereSpherePointOnTheLineOfCentres) {
+  using T = TypeParam;
+  const Vec3d c1(1.0, 2.0, 3.0), u = Vec3d(2.0, -1.0, 2.0) / 3.0;  // |u| = 1
+  const double r1 = 0.5, r2 = 0.3;
+  for (const double gap : {0.0, 0.015, 0.025}) {
+    SCOPED_TRACE(gap);
+    const BodySettings a = SphereAt(r1, c1), b = SphereAt(r2, c1 + (r1 + r2 + gap) * u);
+    const Vec3d ca = ToVec3d(a.position), cb = ToVec3d(b.position);  // as the world has them
+    const PairManifold<T> m = ManifoldOf<T>(a, b);
+    if (gap > kSpeculative) {
+      EXPECT_EQ(m.count, 0);
+      continue;
+    }
+    ExpectOnePoint(m, ca, cb, r1, r2);
+    EXPECT_NEAR(m.separation, gap, kPointTolerance);
+    // The other body order: n from the (now first) small sphere to the big one.
+    const PairManifold<T> swapped = ManifoldOf<T>(b, a);
+    ExpectOnePoint(swapped, cb, ca, r2, r1);
+    EXPECT_LE((swapped.normal + u).norm(), kPointTolerance);
+  }
+}
+
+// Concentric spheres: δ = 0 gives no direction; the fallback is +Y.
+TYPED_TEST(ReferenceContactTest, ConcentricSpheresFallBackToPlusY) {
+  using T = TypeParam;
+  const Vec3d c(1.0, 2.0, 3.0);
+  const PairManifold<T> m = ManifoldOf<T>(SphereAt(0.5, c), SphereAt(0.3, c));
+  const Vec3d cf = ToVec3d(SphereAt(0.5, c).position);
+  ExpectOnePoint(m, cf, cf, 0.5, 0.3, Vec3d::UnitY());
+  EXPECT_NEAR(m.separation, -0.8, kPointTolerance);
+}
+
+// Sphere–capsule: a capsule (r 0.3, h 0.5) along X at the origin, core
+// a = (−0.5, 0, 0) to b = (0.5, 0, 0); a sphere (r 0.19) whose centre is 0.5
+// from the core (separation 0.01): over the segment's interior the core point
+// is the centre's foot on the axis, beyond either end that end.
+TYPED_TEST(ReferenceContactTest, SphereCapsuleNearestPointOfTheSegment) {
+  using T = TypeParam;
+  const double rc = 0.3, rs = 0.19;
+  const BodySettings capsule = CapsuleAt(rc, 0.5, Vec3d::Zero(), kYToX);
+  struct Case {
+    const char* name;
+    Vec3d centre;  // the sphere's
+    Vec3d core;    // the nearest point of the capsule's core
+  };
+  for (const Case& c : {Case{"interior", {0.2, 0.3, 0.4}, {0.2, 0.0, 0.0}},
+                        Case{"beyond b", {0.8, 0.4, 0.0}, {0.5, 0.0, 0.0}},
+                        Case{"beyond a", {-0.8, 0.0, -0.4}, {-0.5, 0.0, 0.0}}}) {
+    SCOPED_TRACE(c.name);
+    const BodySettings sphere = SphereAt(rs, c.centre);
+    const Vec3d centre = ToVec3d(sphere.position);
+    // Capsule first: n from the capsule to the sphere.
+    const PairManifold<T> m = ManifoldOf<T>(capsule, sphere);
+    ExpectOnePoint(m, c.core, centre, rc, rs);
+    EXPECT_NEAR(m.separation, 0.01, kPointTolerance);
+    // Sphere first: n from the sphere to the capsule.
+    ExpectOnePoint(ManifoldOf<T>(sphere, capsule), centre, c.core, rs, rc);
+  }
+  // 0.03 apart (r 0.17): beyond D, no point.
+  EXPECT_EQ(ManifoldOf<T>(capsule, SphereAt(0.17, {0.2, 0.3, 0.4})).count, 0);
+  // A sphere centred on the core: δ = 0 and not two capsules, so +Y.
+  const BodySettings inside = SphereAt(rs, {0.25, 0.0, 0.0});
+  ExpectOnePoint(ManifoldOf<T>(capsule, inside), Vec3d(0.25, 0.0, 0.0), Vec3d(0.25, 0.0, 0.0), rc,
+                 rs, Vec3d::UnitY());
+}
+
+// Capsule–capsule, core segments crossing: capsule 1 (r 0.2) along X at the
+// origin, capsule 2 (r 0.25) along Y centred at (0.25, 0.25, 0): both cores
+// pass through (0.25, 0, 0), L = 0 (every coordinate here is exact in float).
+// The fallback normal is across both segments, normalize(d1 × d2) as it
+// comes: crossing cores have no side "towards" the other (their centres are
+// level along d1 × d2), so the sign follows the shapes' axes, a fixed rule.
+TYPED_TEST(ReferenceContactTest, CrossingCapsulesFallBackToTheCrossProduct) {
+  using T = TypeParam;
+  const double r1 = 0.2, r2 = 0.25;
+  const Vec3d meet(0.25, 0.0, 0.0);
+  BodySettings along_x = CapsuleAt(r1, 0.5, Vec3d::Zero(), kYToX);
+  BodySettings along_y = CapsuleAt(r2, 0.5, {0.25, 0.25, 0.0}, kIdentity);
+  // d1 × d2 = X × Y = +Z. The point: s1 = s2 = meet, separation −(r1 + r2).
+  const PairManifold<T> m = ManifoldOf<T>(along_x, along_y);
+  ExpectOnePoint(m, meet, meet, r1, r2, Vec3d::UnitZ());
+  EXPECT_NEAR(m.separation, -(r1 + r2), kPointTolerance);
+  // The other body order: d1 × d2 = Y × X = −Z.
+  ExpectOnePoint(ManifoldOf<T>(along_y, along_x), meet, meet, r2, r1, -Vec3d::UnitZ());
+  // The same shapes on a body whose centre of mass sits off its shape:
+  // still +Z (the bodies' centres play no part).
+  along_x.position = {0.0f, 0.0f, 1.0f};
+  along_x.shape.position = {-1.0f, 0.0f, 0.0f};
+  ExpectOnePoint(ManifoldOf<T>(along_x, along_y), meet, meet, r1, r2, Vec3d::UnitZ());
+}
+
+// Capsule–capsule, skew: closest points of segments at an angle, inside both
+// or clamped to an end, against the brute-force search. The second radius is
+// chosen so the surfaces are 0.01 apart. Points 1e-5: the closest points of
+// segments at angle θ move by the rounding over sin θ (θ ≥ 30° here).
+TYPED_TEST(ReferenceContactTest, SkewCapsulesClosestPointsOfTheSegments) {
+  using T = TypeParam;
+  struct Case {
+    Float3 axis1;
+    double angle1;
+    Vec3d centre1;
+    double h1;
+    Float3 axis2;
+    double angle2;
+    Vec3d centre2;
+    double h2;
+  };
+  const double r1 = 0.2;
+  for (const Case& c : {
+           // Perpendicular, interior of both: s1 = (0.25, 0, 0), s2 = (0.25, 0.46, 0).
+           Case{{0, 0, 1}, kPiD / 2, {0.0, 0.0, 0.0}, 0.5, {1, 0, 0}, kPiD / 2, {0.25, 0.46, 0.0}, 0.5},
+           // General angles, both interior.
+           Case{{0, 0, 1}, 0.7, {0.0, 0.0, 0.0}, 0.5, {1, 0, 0}, 1.2, {0.3, 0.7, 0.2}, 0.4},
+           // Segment 2 ends before reaching segment 1's line: clamped to its end.
+           Case{{0, 0, 1}, kPiD / 2, {0.0, 0.0, 0.0}, 0.5, {1, 0, 0}, kPiD / 2, {0.25, 0.3, 0.65}, 0.5},
+           // Both clamped: the ends nearest each other.
+           Case{{1, 0, 0}, 0.9, {0.1, 0.2, 0.3}, 0.3, {0, 0, 1}, 2.1, {0.9, 0.9, 0.4}, 0.35},
+       }) {
+    BodySettings b1 = Capsule(float(r1), float(c.h1),
+                              {float(c.centre1.x()), float(c.centre1.y()), float(c.centre1.z())});
+    b1.rotation = RotationAbout(c.axis1, c.angle1);
+    BodySettings b2 = Capsule(0.1f, float(c.h2),
+                              {float(c.centre2.x()), float(c.centre2.y()), float(c.centre2.z())});
+    b2.rotation = RotationAbout(c.axis2, c.angle2);
+    const auto [s1, s2] = BruteClosestPoints(CoreOf(b1), CoreOf(b2));
+    const double distance = (s2 - s1).norm();
+    SCOPED_TRACE("s1 " + std::to_string(s1.x()) + " " + std::to_string(s1.y()) + " " +
+                 std::to_string(s1.z()) + ", L " + std::to_string(distance));
+    ASSERT_GT(distance, r1 + 0.05);  // room for a second radius
+    b2.shape.radius = float(distance - r1 - 0.01);
+    const double r2 = b2.shape.radius;
+    ExpectOnePoint(ManifoldOf<T>(b1, b2), s1, s2, r1, r2, Vec3d((s2 - s1).normalized()), 1e-5);
+    // Both orders give the same pair of points, swapped, and n reversed.
+    ExpectOnePoint(ManifoldOf<T>(b2, b1), s2, s1, r2, r1, Vec3d((s1 - s2).normalized()), 1e-5);
+  }
+}
+
+// Capsule–capsule, parallel (Δ = 0): the closest points are not unique while
+// the segments overlap along their direction; the point is at the middle of
+// the overlap of segment 2 projected on segment 1. Capsule 1 (r 0.2) along X
+// at the origin, x ∈ [−0.5, 0.5]; capsule 2 (r 0.19) along ±X, 0.4 above.
+TYPED_TEST(ReferenceContactTest, ParallelCapsulesMiddleOfTheOverlap) {
+  using T = TypeParam;
+  const double r1 = 0.2, r2 = 0.19;
+  const BodySettings lower = CapsuleAt(r1, 0.5, Vec3d::Zero(), kYToX);
+  struct Case {
+    const char* name;
+    double half_height, x;  // capsule 2's: x ∈ [x − h, x + h]
+    Quaternion rotation;
+    double middle;  // of the overlap
+  };
+  for (const Case& c : {Case{"overlapping", 0.5, 0.5, kYToX, 0.25},  // [0, 0.5]
+                        Case{"overlapping, antiparallel", 0.5, 0.5, kYToMinusX, 0.25},
+                        Case{"inside", 0.2, -0.1, kYToX, -0.1},  // [−0.3, 0.1]
+                        Case{"covering", 1.0, 0.25, kYToMinusX, 0.0}}) {  // [−0.5, 0.5]
+    SCOPED_TRACE(c.name);
+    const BodySettings upper = CapsuleAt(r2, c.half_height, {c.x, 0.4, 0.0}, c.rotation);
+    const PairManifold<T> m = ManifoldOf<T>(lower, upper);
+    ExpectOnePoint(m, Vec3d(c.middle, 0.0, 0.0), Vec3d(c.middle, 0.4, 0.0), r1, r2);
+    EXPECT_NEAR(m.separation, 0.01, kPointTolerance);
+  }
+  // Overlapping on one line (L = 0, d1 × d2 = 0): the fallback +Y.
+  const BodySettings inline_capsule = CapsuleAt(r2, 0.5, {0.5, 0.0, 0.0}, kYToX);
+  ExpectOnePoint(ManifoldOf<T>(lower, inline_capsule), Vec3d(0.25, 0.0, 0.0),
+                 Vec3d(0.25, 0.0, 0.0), r1, r2, Vec3d::UnitY());
+}
+
+// Parallel, not overlapping: the nearest ends. Capsule 2 (r 0.21) along X at
+// (1.3, 0.3, 0), x ∈ [0.8, 1.8]: s1 = b1 = (0.5, 0, 0), s2 = a2 = (0.8, 0.3, 0),
+// L = 0.3 √2 = 0.424, separation 0.014.
+TYPED_TEST(ReferenceContactTest, ParallelCapsulesNotOverlappingNearestEnds) {
+  using T = TypeParam;
+  const PairManifold<T> m = ManifoldOf<T>(CapsuleAt(0.2, 0.5, Vec3d::Zero(), kYToX),
+                                          CapsuleAt(0.21, 0.5, {1.3, 0.3, 0.0}, kYToX));
+  ExpectOnePoint(m, Vec3d(0.5, 0.0, 0.0), Vec3d(0.8, 0.3, 0.0), 0.2, 0.21);
+  EXPECT_NEAR(m.separation, 0.3 * std::sqrt(2.0) - 0.41, kPointTolerance);
+  // (0.03, 0.03, 0) further apart: L = 0.467, beyond D.
+  EXPECT_EQ(ManifoldOf<T>(CapsuleAt(0.2, 0.5, Vec3d::Zero(), kYToX),
+                          CapsuleAt(0.21, 0.5, {1.33, 0.33, 0.0}, kYToX))
+                .count,
+            0);
+}
+
+// End to end: the two nearest ends, in line (along X and along Y) and at a
+// right angle (an L: capsule 2 along Z beginning 0.3 beyond capsule 1's end).
+TYPED_TEST(ReferenceContactTest, CapsulesEndToEnd) {
+  using T = TypeParam;
+  {
+    SCOPED_TRACE("in line along X");
+    const PairManifold<T> m = ManifoldOf<T>(CapsuleAt(0.2, 0.5, Vec3d::Zero(), kYToX),
+                                            CapsuleAt(0.2, 0.5, {1.41, 0.0, 0.0}, kYToX));
+    ExpectOnePoint(m, Vec3d(0.5, 0.0, 0.0), Vec3d(0.91, 0.0, 0.0), 0.2, 0.2);
+    EXPECT_NEAR(m.separation, 0.01, kPointTolerance);
+  }
+  {
+    SCOPED_TRACE("in line along Y, standing");
+    const PairManifold<T> m = ManifoldOf<T>(CapsuleAt(0.2, 0.5, Vec3d::Zero(), kIdentity),
+                                            CapsuleAt(0.2, 0.5, {0.0, 1.41, 0.0}, kIdentity));
+    ExpectOnePoint(m, Vec3d(0.0, 0.5, 0.0), Vec3d(0.0, 0.91, 0.0), 0.2, 0.2);
+  }
+  {
+    SCOPED_TRACE("at a right angle");
+    // Capsule 2 along Z at (0.8, 0, 0.7): z ∈ [0.2, 1.2]; s2 = (0.8, 0, 0.2),
+    // L = √(0.3² + 0.2²) = 0.3606, separation 0.0106 with r 0.2 and 0.15.
+    const PairManifold<T> m = ManifoldOf<T>(CapsuleAt(0.2, 0.5, Vec3d::Zero(), kYToX),
+                                            CapsuleAt(0.15, 0.5, {0.8, 0.0, 0.7}, kYToZ));
+    ExpectOnePoint(m, Vec3d(0.5, 0.0, 0.0), Vec3d(0.8, 0.0, 0.2), 0.2, 0.15);
+  }
+}
+
+// ----------------------------- spheres and capsules: impulses of the scenes
+
+// The hit of HeadOnSpheres (CollisionElasticDynamic): one point on the line
+// of centres (n = +X from the left sphere to the right one), 0.01 m apart.
+// Equal masses m: one row of effective mass m/2 through both centres, v_n =
+// −15 m/s. e = 1: Λ = (m/2)(15 + 15) = 15 m (the exchange); e = 0: the
+// speculative row lets the gap close, Λ = (m/2)(15 − s/dt) = (m/2)(15 − 0.6).
+// Relative 1e-5: s is the difference of float positions near 2 (1e-6 m, so
+// s/dt to 6e-5 of 14.4 m/s... 4e-6 relative) plus a few roundings.
+TYPED_TEST(ReferenceContactTest, HeadOnSpheresManifold) {
+  using T = TypeParam;
+  for (const float e : {1.0f, 0.0f}) {
+    SCOPED_TRACE(e);
+    const Scene scene = HeadOnSpheresScene(e);
+    const double mass = scene.bodies()[0].mass;
+    World<T> world(scene);
+    for (int i = 0; i < kHeadOnHitSubstep; ++i) {
+      world.Step(ZeroGravity());
+      ASSERT_EQ(world.contact(0).PointCount(), 0) << i;
+    }
+    world.Step(ZeroGravity());
+    const ContactConstraint<T>& contact = world.contact(0);
+    ASSERT_EQ(contact.PointCount(), 1);
+    EXPECT_LE(Distance(contact.Normal(), 1.0, 0.0, 0.0), 1e-6);
+    const double separation = kHeadOnGap - (kHeadOnV1 - kHeadOnV2) * kHeadOnHitSubstep * kDt;
+    EXPECT_NEAR(double(contact.Separation(0)), separation, 1e-5);
+    EXPECT_NEAR(double(contact.Point1(0).y()), 0.0, 1e-6);
+    const double expected = e > 0.0f ? mass * (kHeadOnV1 - kHeadOnV2)
+                                     : mass / 2.0 * (kHeadOnV1 - kHeadOnV2 - separation / kDt);
+    EXPECT_NEAR(double(contact.NormalImpulse(0)), expected, 1e-5 * expected);
+  }
+}
+
+// MinVelocityForRestitution with two touching spheres (1 m/s into one at
+// rest, e = 1, equal masses m): above the threshold (0.99 m/s) the row
+// bounces, Λ = (m/2)(1 + 1) = m; below it (1.01) it stops the approach,
+// Λ = (m/2)·1. Relative 1e-6: one row, a few roundings.
+TYPED_TEST(ReferenceContactTest, MinVelocityForRestitutionSpheresManifold) {
+  using T = TypeParam;
+  for (const float threshold : {0.99f, 1.01f}) {
+    SCOPED_TRACE(threshold);
+    const Scene scene = TouchingSpheresScene(1.0);
+    const double mass = scene.bodies()[0].mass;
+    World<T> world(scene);
+    StepSettings settings = ZeroGravity();
+    settings.min_velocity_for_restitution = threshold;
+    world.Step(settings);
+    const ContactConstraint<T>& contact = world.contact(0);
+    ASSERT_EQ(contact.PointCount(), 1);
+    EXPECT_LE(Distance(contact.Point1(0), 0.0, 0.0, 0.0), 1e-6);
+    EXPECT_NEAR(double(contact.Separation(0)), 0.0, 1e-6);
+    const double expected = threshold < 1.0f ? mass : mass / 2.0;
+    EXPECT_NEAR(double(contact.NormalImpulse(0)), expected, 1e-6 * expected);
+  }
+}
+
+// SphereOnCapsuleStaysPut: after 5 s the sphere–capsule slot (1, 2) has one
+// point at the capsule's top, n = +Y, carrying the sphere's weight per step;
+// the floor–capsule slot (0, 1) two points carrying both weights; the sphere
+// is 0.6 m above the floor (no point). Relative 1e-4 (one row through the
+// centres of mass) and 1e-3 (the two floor points, as the lying capsule's).
+TYPED_TEST(ReferenceContactTest, SphereOnCapsuleManifolds) {
+  using T = TypeParam;
+  const Scene scene = SphereOnCapsuleScene();
+  const double capsule_mass = scene.bodies()[1].mass, sphere_mass = scene.bodies()[2].mass;
+  World<T> world(scene);
+  Simulate(world, Settings(), 5.0);
+  ASSERT_EQ(world.contact_count(), 3u);
+  const ContactConstraint<T>& floor_capsule = world.contact(0);
+  const ContactConstraint<T>& floor_sphere = world.contact(1);
+  const ContactConstraint<T>& capsule_sphere = world.contact(2);
+  EXPECT_EQ(capsule_sphere.body1(), 1u);
+  EXPECT_EQ(capsule_sphere.body2(), 2u);
+  EXPECT_EQ(floor_sphere.PointCount(), 0);
+  ASSERT_EQ(floor_capsule.PointCount(), 2);
+  ASSERT_EQ(capsule_sphere.PointCount(), 1);
+  EXPECT_LE(Distance(capsule_sphere.Normal(), 0.0, 1.0, 0.0), 1e-5);
+  EXPECT_LE(Distance(capsule_sphere.Point1(0), 0.0, 2.0 * kStackCapsuleY, 0.0), 1e-4);
+  const double sphere_weight = sphere_mass * kG * kDt;
+  const double both_weights = (capsule_mass + sphere_mass) * kG * kDt;
+  EXPECT_NEAR(double(capsule_sphere.NormalImpulse(0)), sphere_weight, 1e-4 * sphere_weight);
+  EXPECT_NEAR(NormalImpulseSum(floor_capsule), both_weights, 1e-3 * both_weights);
+}
+
+// CrossedCapsulesStayPut (1 s): the upper capsule rests on the lower one's top at
+// one point (n = +Y, its weight per step); the lower one's two floor points
+// carry both weights; the upper one is 0.6 m above the floor.
+TYPED_TEST(ReferenceContactTest, CrossedCapsulesManifolds) {
+  using T = TypeParam;
+  const Scene scene = CrossedCapsulesScene();
+  const double lower_mass = scene.bodies()[1].mass, upper_mass = scene.bodies()[2].mass;
+  World<T> world(scene);
+  Simulate(world, Settings(), 1.0);
+  ASSERT_EQ(world.contact_count(), 3u);
+  const ContactConstraint<T>& floor_lower = world.contact(0);
+  const ContactConstraint<T>& floor_upper = world.contact(1);
+  const ContactConstraint<T>& lower_upper = world.contact(2);
+  EXPECT_EQ(floor_upper.PointCount(), 0);
+  ASSERT_EQ(floor_lower.PointCount(), 2);
+  ASSERT_EQ(lower_upper.PointCount(), 1);
+  EXPECT_LE(Distance(lower_upper.Normal(), 0.0, 1.0, 0.0), 1e-5);
+  EXPECT_LE(Distance(lower_upper.Point1(0), 0.0, 2.0 * kLowerCapsuleY, 0.0), 1e-4);
+  const double upper_weight = upper_mass * kG * kDt;
+  const double both_weights = (lower_mass + upper_mass) * kG * kDt;
+  EXPECT_NEAR(double(lower_upper.NormalImpulse(0)), upper_weight, 1e-4 * upper_weight);
+  EXPECT_NEAR(NormalImpulseSum(floor_lower), both_weights, 1e-3 * both_weights);
+}
+
+// GlancingSphereCapsuleConservesMomentum: when the sphere reaches the
+// capsule, the one point lies on the capsule's cylinder (0.3 from its axis,
+// the X axis) with n across the axis (n_x = 0, the point 0.3 along it from
+// the middle, inside the segment), and the normal impulse pushes (Λ > 0).
+TYPED_TEST(ReferenceContactTest, GlancingSphereCapsuleManifold) {
+  using T = TypeParam;
+  World<T> world(GlancingSphereCapsuleScene());
+  int step = 0;
+  while (world.contact(0).PointCount() == 0 && step < 60) {
+    world.Step(ZeroGravity());
+    ++step;
+  }
+  const ContactConstraint<T>& contact = world.contact(0);
+  ASSERT_EQ(contact.PointCount(), 1);
+  EXPECT_EQ(contact.MaxPointCount(), 1);
+  EXPECT_NEAR(double(contact.Normal().x()), 0.0, 1e-6);
+  const Vec3d p1 = contact.Point1(0).template cast<double>();
+  EXPECT_NEAR(std::hypot(p1.y(), p1.z()), 0.3, 1e-6);
+  EXPECT_NEAR(p1.x(), 0.3, 1e-6);
+  EXPECT_GT(double(contact.Normal().y()), 0.0);
+  EXPECT_GT(double(contact.Normal().z()), 0.0);
+  EXPECT_GT(double(contact.NormalImpulse(0)), 0.0);
+}
+
+// Slots: spheres and capsules with each other and with the floor, in pair
+// order, whatever the motion types as long as one body is dynamic.
+TYPED_TEST(ReferenceContactTest, SpheresAndCapsulesMakeSlots) {
+  using T = TypeParam;
+  Scene scene;
+  scene.AddBody(Floor());                                                  // 0
+  scene.AddBody(Sphere(0.5f, {0.0f, 2.0f, 0.0f}));                         // 1
+  scene.AddBody(Capsule(0.3f, 0.5f, {3.0f, 2.0f, 0.0f}));                  // 2
+  BodySettings static_sphere = Sphere(0.5f, {6.0f, 2.0f, 0.0f});
+  static_sphere.motion_type = MotionType::kStatic;
+  scene.AddBody(static_sphere);                                            // 3
+  BodySettings kinematic_capsule = Capsule(0.3f, 0.5f, {9.0f, 2.0f, 0.0f});
+  kinematic_capsule.motion_type = MotionType::kKinematic;
+  scene.AddBody(kinematic_capsule);                                        // 4
+  World<T> world(scene);
+  // Every pair but (0, 3), (0, 4), (3, 4): no dynamic body.
+  const std::vector<std::pair<std::size_t, std::size_t>> expected = {
+      {0, 1}, {0, 2}, {1, 2}, {1, 3}, {1, 4}, {2, 3}, {2, 4}};
+  ASSERT_EQ(world.contact_count(), expected.size());
+  for (std::size_t k = 0; k < expected.size(); ++k) {
+    EXPECT_EQ(world.contact(k).body1(), expected[k].first) << k;
+    EXPECT_EQ(world.contact(k).body2(), expected[k].second) << k;
+  }
+  EXPECT_EQ(world.contact(0).MaxPointCount(), 1);  // floor–sphere
+  EXPECT_EQ(world.contact(1).MaxPointCount(), 2);  // floor–capsule
+}
+
 // ---------------------------------------------- slots: order, body order
 
 // A plane of a higher index than the sphere is body 2: n points from the
@@ -469,30 +974,51 @@ TYPED_TEST(ReferenceContactTest, RefusesPlaneOnNonStaticBody) {
   }
 }
 
+// A pair that passes the filter but is neither a plane with a sphere, capsule
+// or box nor two spheres or capsules is refused, naming both bodies.
 TYPED_TEST(ReferenceContactTest, RefusesUnsupportedPairNamingBothBodies) {
   using T = TypeParam;
-  Scene scene;
-  scene.AddBody(Floor());
-  BodySettings a = Sphere(0.5f, {0.0f, 2.0f, 0.0f});
-  a.name = "left ball";
-  BodySettings b = Box({0.5f, 0.5f, 0.5f}, {3.0f, 2.0f, 0.0f});
-  b.name = "right box";
-  scene.AddBody(a);
-  scene.AddBody(b);
-  try {
-    World<T> world(scene);
-    ADD_FAILURE() << "a sphere-box pair was accepted";
-  } catch (const std::invalid_argument& error) {
-    const std::string what = error.what();
-    EXPECT_NE(what.find("left ball"), std::string::npos) << what;
-    EXPECT_NE(what.find("right box"), std::string::npos) << what;
+  const BodySettings sphere = Sphere(0.5f, {0.0f, 2.0f, 0.0f});
+  const BodySettings capsule = Capsule(0.3f, 0.5f, {0.0f, 2.0f, 0.0f});
+  const BodySettings box = Box({0.5f, 0.5f, 0.5f}, {3.0f, 2.0f, 0.0f});
+  struct Case {
+    const char* name;
+    BodySettings left, right;
+  };
+  for (const Case& c : {Case{"sphere-box", sphere, box}, Case{"box-sphere", box, sphere},
+                        Case{"capsule-box", capsule, box}, Case{"box-box", box, box}}) {
+    SCOPED_TRACE(c.name);
+    Scene scene;
+    scene.AddBody(Floor());
+    BodySettings a = c.left, b = c.right;
+    a.name = "left one";
+    b.name = "right one";
+    b.position = {3.0f, 2.0f, 0.0f};
+    scene.AddBody(a);
+    scene.AddBody(b);
+    try {
+      World<T> world(scene);
+      ADD_FAILURE() << "the pair was accepted";
+    } catch (const std::invalid_argument& error) {
+      const std::string what = error.what();
+      EXPECT_NE(what.find("left one"), std::string::npos) << what;
+      EXPECT_NE(what.find("right one"), std::string::npos) << what;
+    }
+    // In groups that do not meet, the same scene is fine.
+    scene.bodies()[1].shape.collision_group = 2;
+    scene.bodies()[1].shape.collision_mask = 1;
+    scene.bodies()[2].shape.collision_group = 4;
+    scene.bodies()[2].shape.collision_mask = 1;
+    EXPECT_EQ(World<T>(scene).contact_count(), 2u);
   }
-  // In groups that do not meet, the same scene is fine.
-  scene.bodies()[1].shape.collision_group = 2;
-  scene.bodies()[1].shape.collision_mask = 1;
-  scene.bodies()[2].shape.collision_group = 4;
-  scene.bodies()[2].shape.collision_mask = 1;
-  EXPECT_EQ(World<T>(scene).contact_count(), 2u);
+  // Two planes: both bodies are static (a plane is on a static body only), so
+  // the pair makes no slot at all and is not refused.
+  Scene planes;
+  planes.AddBody(Floor());
+  BodySettings wall = Floor();
+  wall.rotation = RotationAbout({0, 0, 1}, kPiD / 2.0);
+  planes.AddBody(wall);
+  EXPECT_EQ(World<T>(planes).contact_count(), 0u);
 }
 
 TYPED_TEST(ReferenceContactTest, RefusesExactSolverAndBadContactSettings) {

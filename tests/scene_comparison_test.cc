@@ -67,7 +67,8 @@ Scene ComparisonScene(const std::string& id) {
 // slide and tip differently, so every per-lane contact decision is taken
 // both ways within a block).
 bool Kicked(const std::string& id) {
-  return id == "mixed" || id == "more_types" || id == "box-drop" || id == "sphere-roll";
+  return id == "mixed" || id == "more_types" || id == "box-drop" || id == "sphere-roll" ||
+         id == "pile";
 }
 
 // Scene id, Highway target bit.
@@ -215,7 +216,7 @@ INSTANTIATE_TEST_SUITE_P(
     // Its parts are compared lane by lane at the part level; the scene is
     // checked for determinism, health and staying assembled (batch_test.cc).
     ::testing::Combine(::testing::Values("cartpole", "chain16", "rackpinion", "geartrain", "mixed",
-                                         "more_types", "box-drop", "sphere-roll", "hopper",
+                                         "more_types", "box-drop", "sphere-roll", "pile", "hopper",
                                          "quadruped"),
                        ::testing::ValuesIn(SupportedStepTargets())),
     [](const auto& info) {

@@ -143,6 +143,13 @@ struct StepSettings {
   float penetration_slop = 0.02f;              // m
   float max_penetration_distance = 0.2f;       // m
   float min_velocity_for_restitution = 1.0f;   // m/s
+  // Off (Jolt): a contact is found once shapes are within the speculative
+  // distance, so a body faster than that per substep lands inside what it
+  // hits by up to one substep's travel, and keeps what the slop leaves. On:
+  // each slot's distance grows by how far its shapes may approach in the
+  // substep (their relative speed along the normal, plus spin times reach),
+  // so they land on the surface (docs/contacts.md).
+  bool speculative_contacts_from_velocity = false;
 };
 
 // A world's constraint position error split by unit (Batch::MaxConstraintErrorSplit).
@@ -359,6 +366,22 @@ class Batch {
   // where an axis has none. Energy a motor used: torque * angular velocity * dt.
   std::size_t MotorForceCount(std::size_t constraint) const;
   void GetMotorForces(std::size_t constraint, std::span<float> out) const;
+
+  // ---- contacts (docs/contacts.md): one slot per pair of shapes that may
+  // touch, in solve order. GetContacts writes [world][ContactSlotCount()]
+  // [kContactFloats]: per slot the points the last substep kept (0 to
+  // max_points), the normal force (N, >= 0: the normal impulses over the
+  // substep), the whole contact force on body 2 (N, world space: normal and
+  // friction; body 1 gets its negation) and the normal from body 1 to body
+  // 2; all zero where the shapes do not touch, and before the first Step.
+  struct ContactSlot {
+    std::size_t body1, body2;  // body1 < body2
+    std::size_t max_points;
+  };
+  static constexpr std::size_t kContactFloats = 8;  // points, normal force, force xyz, normal xyz
+  std::size_t ContactSlotCount() const;
+  ContactSlot GetContactSlot(std::size_t slot) const;
+  void GetContacts(std::span<float> out) const;
 
   // ---- exact checkpoints (tree search, resets to saved states, replay)
   BatchSnapshot Snapshot() const;

@@ -62,7 +62,9 @@ std::vector<std::string> StressSceneIds();
 Scene MakeStressScene(std::string_view id);
 
 // The contact scenes (docs/scenes.md, docs/contacts.md): box-drop,
-// sphere-roll. Shapes on a ground plane; none has an action.
+// sphere-roll, pile, hopper, quadruped. Shapes on a ground plane; the
+// walkers (hopper, quadruped) take random motor targets (SceneActions), the
+// others have no action.
 std::vector<std::string> ContactSceneIds();
 // The contact scene `id` (one of ContactSceneIds()). Throws
 // std::invalid_argument naming the unknown id and listing the valid ones.

@@ -221,3 +221,39 @@ def test_every_constraint_type_is_bound():
         scene.add_body(mw.BodySettings())
         assert scene.add_constraint(constraint_type(body1=0, body2=0)) == 0
         assert type(scene.constraints[0]) is constraint_type
+
+
+def test_shapes_make_contacts():
+    """A ball dropped on a ground plane rests on it; a box beside it in its own
+    collision group falls through; a bad shape is refused by name."""
+    scene = mw.Scene()
+    scene.add_body(mw.BodySettings(name="ground", motion_type=mw.MotionType.STATIC,
+                                   shape=mw.ShapeSettings(type=mw.ShapeType.PLANE)))
+    scene.add_body(mw.BodySettings(name="ball", position=(0, 1, 0), linear_damping=0,
+                                   shape=mw.ShapeSettings(type=mw.ShapeType.SPHERE, radius=0.25)))
+    scene.add_body(mw.BodySettings(name="ghost", position=(3, 1, 0),
+                                   shape=mw.ShapeSettings(type=mw.ShapeType.BOX, collision_group=2,
+                                                          collision_mask=2)))
+    batch = mw.Batch(scene, WORLDS)
+    assert "contacts in solve order (after the constraints): 1" in batch.plan()
+    settings = mw.StepSettings(penetration_slop=0.01)
+    for _ in range(120):
+        batch.step(settings)
+    state = batch.get_state()
+    # Resting within the slop (1 cm): the speculative contact stops it near
+    # the surface; the ghost fell 2 s freely (~19.6 m).
+    assert np.all(np.abs(state[:, 1, 1] - 0.25) <= 0.01)
+    assert np.all(state[:, 2, 1] < -15)
+    # The ball's one point carries its weight (1 kg): 9.81 N up, on body 2.
+    assert batch.num_contact_slots == 1 and batch.contact_slot(0) == (0, 1, 1)
+    contacts = batch.get_contacts()
+    assert contacts.shape == (WORLDS, 1, 8) and contacts.dtype == np.float32
+    assert np.all(contacts[:, 0, 0] == 1)
+    np.testing.assert_allclose(contacts[:, 0, 1], 9.81, rtol=1e-4)
+    np.testing.assert_allclose(contacts[:, 0, 2:5], np.tile([0, 9.81, 0], (WORLDS, 1)), atol=1e-3)
+    bad = mw.Scene(scene)
+    ball = bad.bodies[1]
+    ball.shape.radius = -1.0
+    bad.set_body(1, ball)
+    with pytest.raises(ValueError, match=r"'ball'.*shape\.radius"):
+        mw.Batch(bad, 4)
