@@ -34,67 +34,13 @@
 #include "manyworlds/scene.h"
 #include "reference/math.h"
 #include "tests/contact_test_scenes.h"
+#include "tests/measurements.h"
 #include "tests/stepper_adapters.h"
 
 namespace manyworlds::stepper_test {
 namespace {
 
 using namespace ::manyworlds::contact_test;  // NOLINT(google-build-using-namespace)
-
-// ------------------------------------------------------------ measurements
-
-// Worst deviation of each quantity of the running test over its cases (worst
-// relative to its bound), with that bound; printed and recorded when the test
-// ends.
-class Measurements {
- public:
-  static Measurements& Get() {
-    static Measurements measurements;
-    return measurements;
-  }
-  void Clear() { worst_.clear(); }
-  void Record(const std::string& what, double value, double bound) {
-    auto [it, inserted] = worst_.try_emplace(what, value, bound);
-    if (!inserted && !(it->second.first / it->second.second >= value / bound)) {
-      it->second = {value, bound};
-    }
-  }
-  void Print(const std::string& stepper) const {
-    for (const auto& [what, entry] : worst_) {
-      std::printf("  [measured] %s %s = %.3g (bound %.3g)\n", stepper.c_str(), what.c_str(),
-                  entry.first, entry.second);
-      ::testing::Test::RecordProperty(what, std::to_string(entry.first));
-    }
-  }
-
- private:
-  std::map<std::string, std::pair<double, double>> worst_;
-};
-
-// A measured quantity that a test bounds itself (EXPECT_GE etc.).
-void Report(const std::string& what, double value, double bound) {
-  Measurements::Get().Record(what, value, bound);
-}
-
-// value ≤ bound (EXPECT_LE), recorded under `what`.
-::testing::AssertionResult AtMost(const std::string& what, double value, double bound) {
-  Measurements::Get().Record(what, value, bound);
-  if (value <= bound) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << what << ": " << value << " > " << bound;
-}
-// |actual − expected| ≤ tolerance (EXPECT_NEAR), the distance recorded under `what`.
-::testing::AssertionResult Near(const std::string& what, double actual, double expected,
-                                double tolerance) {
-  const double distance = std::abs(actual - expected);
-  Measurements::Get().Record(what, distance, tolerance);
-  if (distance <= tolerance) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << what << ": actual " << actual << ", expected "
-                                       << expected << ", distance " << distance << " > "
-                                       << tolerance;
-}
-#define EXPECT_AT_MOST(what, value, bound) EXPECT_TRUE(AtMost((what), (value), (bound)))
-#define EXPECT_MEASURED_NEAR(what, actual, expected, tolerance) \
-  EXPECT_TRUE(Near((what), (actual), (expected), (tolerance)))
 
 // ---------------------------------------------------------------- helpers
 

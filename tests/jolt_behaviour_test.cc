@@ -37,6 +37,7 @@
 #include "manyworlds/scene.h"
 #include "reference/hermite_path.h"
 #include "reference/math.h"
+#include "tests/measurements.h"
 #include "tests/stepper_adapters.h"
 
 namespace manyworlds::stepper_test {
@@ -92,36 +93,6 @@ void Simulate(Stepper& world, int steps, const StepSettings& settings = {}) {
   for (int i = 0; i < steps; ++i) world.Step(settings);
 }
 
-// Worst deviations of the running test, per quantity, with the bound they were
-// held to; printed and recorded when the test ends.
-class Measurements {
- public:
-  static Measurements& Get() {
-    static Measurements measurements;
-    return measurements;
-  }
-  void Clear() { worst_.clear(); }
-  void Record(const std::string& what, double value, double bound) {
-    auto [it, inserted] = worst_.try_emplace(what, value, bound);
-    if (!inserted && !(it->second.first >= value)) it->second = {value, bound};
-  }
-  void Print(const std::string& stepper) const {
-    for (const auto& [what, entry] : worst_) {
-      std::printf("  [measured] %s %s = %.3g (bound %.3g)\n", stepper.c_str(), what.c_str(),
-                  entry.first, entry.second);
-      ::testing::Test::RecordProperty(what, std::to_string(entry.first));
-    }
-  }
-
- private:
-  std::map<std::string, std::pair<double, double>> worst_;
-};
-
-// A measured quantity that a test bounds itself (EXPECT_LE etc.).
-void Report(const std::string& what, double value, double bound) {
-  Measurements::Get().Record(what, value, bound);
-}
-
 // Jolt's CHECK_APPROX_EQUAL for vectors: distance within the tolerance. The
 // distance is recorded under `what`.
 ::testing::AssertionResult VecNear(const std::string& what, const Vec3d& actual,
@@ -133,21 +104,8 @@ void Report(const std::string& what, double value, double bound) {
          << what << ": actual (" << actual.transpose() << "), expected ("
          << expected.transpose() << "), distance " << distance << " > " << tolerance;
 }
-::testing::AssertionResult Near(const std::string& what, double actual, double expected,
-                                double tolerance) {
-  const double distance = std::abs(actual - expected);
-  Measurements::Get().Record(what, distance, tolerance);
-  if (distance <= tolerance) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << what << ": actual " << actual << ", expected "
-                                       << expected << ", distance " << distance << " > "
-                                       << tolerance;
-}
 #define EXPECT_VEC_NEAR(what, actual, expected, tolerance) \
   EXPECT_TRUE(VecNear((what), (actual), (expected), (tolerance)))
-#define EXPECT_MEASURED_NEAR(what, actual, expected, tolerance) \
-  EXPECT_TRUE(Near((what), (actual), (expected), (tolerance)))
-#define ASSERT_MEASURED_NEAR(what, actual, expected, tolerance) \
-  ASSERT_TRUE(Near((what), (actual), (expected), (tolerance)))
 
 // One coordinate moved by symplectic Euler as the world does (Jolt's
 // PhysicsTestContext::PredictPosition): v += a·dt, then x += v·dt, every step;

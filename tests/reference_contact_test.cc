@@ -781,56 +781,42 @@ TYPED_TEST(ReferenceContactTest, MinVelocityForRestitutionSpheresManifold) {
   }
 }
 
-// SphereOnCapsuleStaysPut: after 5 s the sphere–capsule slot (1, 2) has one
-// point at the capsule's top, n = +Y, carrying the sphere's weight per step;
-// the floor–capsule slot (0, 1) two points carrying both weights; the sphere
-// is 0.6 m above the floor (no point). Relative 1e-4 (one row through the
-// centres of mass) and 1e-3 (the two floor points, as the lying capsule's).
-TYPED_TEST(ReferenceContactTest, SphereOnCapsuleManifolds) {
-  using T = TypeParam;
-  const Scene scene = SphereOnCapsuleScene();
-  const double capsule_mass = scene.bodies()[1].mass, sphere_mass = scene.bodies()[2].mass;
-  World<T> world(scene);
-  Simulate(world, Settings(), 5.0);
-  ASSERT_EQ(world.contact_count(), 3u);
-  const ContactConstraint<T>& floor_capsule = world.contact(0);
-  const ContactConstraint<T>& floor_sphere = world.contact(1);
-  const ContactConstraint<T>& capsule_sphere = world.contact(2);
-  EXPECT_EQ(capsule_sphere.body1(), 1u);
-  EXPECT_EQ(capsule_sphere.body2(), 2u);
-  EXPECT_EQ(floor_sphere.PointCount(), 0);
-  ASSERT_EQ(floor_capsule.PointCount(), 2);
-  ASSERT_EQ(capsule_sphere.PointCount(), 1);
-  EXPECT_LE(Distance(capsule_sphere.Normal(), 0.0, 1.0, 0.0), 1e-5);
-  EXPECT_LE(Distance(capsule_sphere.Point1(0), 0.0, 2.0 * kStackCapsuleY, 0.0), 1e-4);
-  const double sphere_weight = sphere_mass * kG * kDt;
-  const double both_weights = (capsule_mass + sphere_mass) * kG * kDt;
-  EXPECT_NEAR(double(capsule_sphere.NormalImpulse(0)), sphere_weight, 1e-4 * sphere_weight);
-  EXPECT_NEAR(NormalImpulseSum(floor_capsule), both_weights, 1e-3 * both_weights);
-}
-
-// CrossedCapsulesStayPut (1 s): the upper capsule rests on the lower one's top at
-// one point (n = +Y, its weight per step); the lower one's two floor points
-// carry both weights; the upper one is 0.6 m above the floor.
-TYPED_TEST(ReferenceContactTest, CrossedCapsulesManifolds) {
-  using T = TypeParam;
-  const Scene scene = CrossedCapsulesScene();
+// A stack on the floor after `seconds`: the upper body (2) rests on the lower
+// one (1) at one point on the lower one's top (2 lower_y up), n = +Y,
+// carrying the upper body's weight per step; the lower one's two floor points
+// carry both weights; the upper body does not touch the floor. Relative 1e-4
+// (one row through the centres of mass) and 1e-3 (the two floor points, as
+// the lying capsule's).
+template <class T>
+void ExpectStackManifolds(const Scene& scene, double lower_y, double seconds) {
   const double lower_mass = scene.bodies()[1].mass, upper_mass = scene.bodies()[2].mass;
   World<T> world(scene);
-  Simulate(world, Settings(), 1.0);
+  Simulate(world, Settings(), seconds);
   ASSERT_EQ(world.contact_count(), 3u);
   const ContactConstraint<T>& floor_lower = world.contact(0);
   const ContactConstraint<T>& floor_upper = world.contact(1);
   const ContactConstraint<T>& lower_upper = world.contact(2);
+  EXPECT_EQ(lower_upper.body1(), 1u);
+  EXPECT_EQ(lower_upper.body2(), 2u);
   EXPECT_EQ(floor_upper.PointCount(), 0);
   ASSERT_EQ(floor_lower.PointCount(), 2);
   ASSERT_EQ(lower_upper.PointCount(), 1);
   EXPECT_LE(Distance(lower_upper.Normal(), 0.0, 1.0, 0.0), 1e-5);
-  EXPECT_LE(Distance(lower_upper.Point1(0), 0.0, 2.0 * kLowerCapsuleY, 0.0), 1e-4);
+  EXPECT_LE(Distance(lower_upper.Point1(0), 0.0, 2.0 * lower_y, 0.0), 1e-4);
   const double upper_weight = upper_mass * kG * kDt;
   const double both_weights = (lower_mass + upper_mass) * kG * kDt;
   EXPECT_NEAR(double(lower_upper.NormalImpulse(0)), upper_weight, 1e-4 * upper_weight);
   EXPECT_NEAR(NormalImpulseSum(floor_lower), both_weights, 1e-3 * both_weights);
+}
+
+// SphereOnCapsuleStaysPut (5 s): a sphere on a capsule lying on the floor.
+TYPED_TEST(ReferenceContactTest, SphereOnCapsuleManifolds) {
+  ExpectStackManifolds<TypeParam>(SphereOnCapsuleScene(), kStackCapsuleY, 5.0);
+}
+
+// CrossedCapsulesStayPut (1 s): a capsule across another lying on the floor.
+TYPED_TEST(ReferenceContactTest, CrossedCapsulesManifolds) {
+  ExpectStackManifolds<TypeParam>(CrossedCapsulesScene(), kLowerCapsuleY, 1.0);
 }
 
 // GlancingSphereCapsuleConservesMomentum: when the sphere reaches the
