@@ -16,10 +16,15 @@ from manyworlds.envs.vector import planar_states
 
 N = 16
 IDS = ["cartpole-balance", "cartpole-swingup", "pendulum-swingup", "acrobot-swingup",
-       "reacher-2link", "ragdoll-pose"]
+       "reacher-2link", "ragdoll-pose", "hopper-forward", "quadruped-forward"]
 OBS_SIZE = {"cartpole-balance": 5, "cartpole-swingup": 5, "pendulum-swingup": 3,
-            "acrobot-swingup": 6, "reacher-2link": 10, "ragdoll-pose": 52}
-ACTION_SIZE = {"reacher-2link": 2, "ragdoll-pose": 4}
+            "acrobot-swingup": 6, "reacher-2link": 10, "ragdoll-pose": 52,
+            "hopper-forward": 11, "quadruped-forward": 54}
+ACTION_SIZE = {"reacher-2link": 2, "ragdoll-pose": 4, "hopper-forward": 3,
+               "quadruped-forward": 8}
+# The walkers end an episode when unhealthy (Gymnasium's rule: fallen); the
+# other tasks only on a broken world.
+TERMINATING = {"hopper-forward", "quadruped-forward"}
 
 
 def bits(a):
@@ -79,19 +84,23 @@ def test_spaces_and_random_rollout(env_id):
         assert terminated.dtype == truncated.dtype == np.bool_
         assert np.isfinite(obs).all() and np.isfinite(reward).all()
         assert obs in env.observation_space
-        assert not terminated.any()  # no task terminates but for health
+        if env_id not in TERMINATING:
+            assert not terminated.any()  # no task terminates but for health
     assert env.batch.unhealthy_world_count == 0
     env.close()
 
 
 def rollout(env, actions, seed, reset_options=None):
-    """Every output of reset then len(actions) steps."""
+    """Every output of reset then len(actions) steps; SAME_STEP's final
+    observations as zeros where no world ended (so that rollouts of
+    different world counts line up step by step)."""
     out = [env.reset(seed=seed, options=reset_options)[0]]
     for a in actions:
         obs, reward, terminated, truncated, info = env.step(a)
         out += [obs, reward, terminated, truncated]
-        if "final_obs" in info:
-            out += [info["final_obs"], info["_final_obs"]]
+        if env.autoreset_mode == envs.AutoresetMode.SAME_STEP:
+            out += [info.get("final_obs", np.zeros_like(obs)),
+                    info.get("_final_obs", np.zeros(env.num_envs, np.bool_))]
     return out
 
 
@@ -613,3 +622,59 @@ def test_gymnasium_path_wiring_with_a_stub(tmp_path):
                             text=True, timeout=120)
     assert result.returncode == 0, result.stderr
     assert "stub ok" in result.stdout
+
+
+def test_hopper_forward_rewards_speed_and_ends_when_fallen():
+    """Gymnasium's Hopper-v5 reward from the torso's state (read here from the
+    batch, not from the environment's observation): x velocity + 1 - 1e-3
+    |u|^2; an episode ends once the torso is below 0.7 m or tilted past
+    0.2 rad. Held at u = 0 (straight legs) it stands for the whole rollout."""
+    env = envs.make("hopper-forward", num_envs=N)
+    env.reset(seed=4)
+    still = np.zeros((N, 3), np.float32)
+    for _ in range(100):
+        obs, reward, terminated, _, _ = env.step(still)
+        assert not terminated.any()
+    torso = env.batch.get_state()[:, 1]
+    np.testing.assert_allclose(reward, torso[:, 7] + 1.0, rtol=1e-6, atol=1e-6)
+    assert np.all(obs[:, 0] > 1.15)  # the torso's centre stays up (1.21-1.25 m)
+    actions = np.full((N, 3), -1.0, np.float32)  # every hinge to its lower limit
+    ended = np.zeros(N, np.bool_)
+    for _ in range(200):
+        obs, reward, terminated, _, _ = env.step(actions)
+        torso = env.batch.get_state()[:, 1]
+        # Where not just reset, the reward is computed from the step's state.
+        live = ~terminated & ~ended
+        np.testing.assert_allclose(reward[live], torso[live, 7] + 1.0 - 3e-3, rtol=1e-5,
+                                   atol=1e-5)
+        angle = 2 * np.arctan2(torso[:, 5], torso[:, 6])
+        fallen = (torso[:, 1] <= 0.7) | (np.abs(angle) >= 0.2)
+        np.testing.assert_array_equal(terminated & ~ended, fallen & ~ended)
+        ended |= terminated
+    assert ended.all(), "a hopper folded to its limits falls"
+
+
+def test_quadruped_forward_observes_the_ground_forces():
+    """Ant-v5's observation ends with the contact force on every body from the
+    ground (get_contacts of the ground's 9 slots); standing still, those
+    carry the whole weight; the reward is x velocity + 1 - 0.5 |u|^2 - 5e-4
+    |clip(f, -1, 1)|^2."""
+    env = envs.make("quadruped-forward", num_envs=N)
+    env.reset(seed=6)
+    still = np.zeros((N, 8), np.float32)
+    for _ in range(40):  # 2 s
+        obs, reward, terminated, _, _ = env.step(still)
+        assert not terminated.any()
+    forces = obs[:, 27:].reshape(N, 9, 3)
+    contacts = env.batch.get_contacts()
+    ground = [s for s in range(env.batch.num_contact_slots) if env.batch.contact_slot(s)[0] == 0]
+    assert len(ground) == 9
+    np.testing.assert_array_equal(forces, contacts[:, ground, 2:5])
+    weight = 9.81 * sum(b.mass for b in env.scene.bodies[1:])
+    # At rest the ground carries the weight (the last substep's impulses; the
+    # motors hold the legs, so 1 % for what is still settling).
+    np.testing.assert_allclose(forces[:, :, 1].sum(axis=1), weight, rtol=1e-2)
+    clipped = np.clip(forces.astype(np.float64), -1, 1)
+    vx = env.batch.get_state()[:, 1, 7]
+    np.testing.assert_allclose(reward, vx + 1.0 - 5e-4 * np.sum(clipped ** 2, axis=(1, 2)),
+                               rtol=1e-6, atol=1e-6)

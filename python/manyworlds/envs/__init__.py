@@ -19,6 +19,7 @@ are gymnasium.vector.VectorEnv subclasses with gymnasium.spaces; without it
 from ._compat import HAVE_GYMNASIUM, AutoresetMode, Box, Discrete, MultiDiscrete
 from .arms import RagdollPoseEnv, ReacherEnv
 from .control import AcrobotSwingupEnv, CartpoleEnv, PendulumSwingupEnv, cartpole_reward
+from .locomotion import HopperForwardEnv, QuadrupedForwardEnv
 from .rewards import tolerance
 from ..sharding import RankError
 from .vector import RANDOMIZATION_OPTIONS, ManyWorldsVectorEnv
@@ -26,7 +27,8 @@ from .vector import RANDOMIZATION_OPTIONS, ManyWorldsVectorEnv
 __all__ = [
     "make", "ids", "AutoresetMode", "HAVE_GYMNASIUM", "Box", "Discrete", "MultiDiscrete",
     "ManyWorldsVectorEnv", "CartpoleEnv", "PendulumSwingupEnv", "AcrobotSwingupEnv",
-    "ReacherEnv", "RagdollPoseEnv", "tolerance", "cartpole_reward", "RANDOMIZATION_OPTIONS",
+    "ReacherEnv", "RagdollPoseEnv", "HopperForwardEnv", "QuadrupedForwardEnv", "tolerance",
+    "cartpole_reward", "RANDOMIZATION_OPTIONS",
     "RankError",
 ]
 
@@ -38,6 +40,8 @@ _REGISTRY = {
     "acrobot-swingup": (AcrobotSwingupEnv, {}),
     "reacher-2link": (ReacherEnv, {}),
     "ragdoll-pose": (RagdollPoseEnv, {}),
+    "hopper-forward": (HopperForwardEnv, {}),
+    "quadruped-forward": (QuadrupedForwardEnv, {}),
 }
 
 
