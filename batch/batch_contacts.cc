@@ -17,8 +17,8 @@ namespace {
 // One world's row of a slot: points kept, normal force, force on body 2, normal.
 void ContactOfLane(const ContactPlan& slot, const std::byte* block, std::size_t lane,
                    float substep_dt, float* out) {
-  const auto& manifold = *reinterpret_cast<const ContactLanes*>(block + slot.offset);
-  const auto* points = reinterpret_cast<const ContactPointLanes*>(block + slot.points_offset);
+  const auto& manifold = At<ContactLanes>(block, slot.offset);
+  const ContactPointLanes* points = &At<ContactPointLanes>(block, slot.points_offset);
   for (std::size_t i = 0; i < Batch::kContactFloats; ++i) out[i] = 0.0f;
   if (manifold.present.lanes[lane] == 0.0f || !(substep_dt > 0.0f)) return;
   const auto at = [&](const Vec3Lanes& v) {

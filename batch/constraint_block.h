@@ -14,6 +14,10 @@ template <class Lanes>
 Lanes& At(std::byte* block, std::size_t offset) {
   return *reinterpret_cast<Lanes*>(block + offset);
 }
+template <class Lanes>
+const Lanes& At(const std::byte* block, std::size_t offset) {
+  return *reinterpret_cast<const Lanes*>(block + offset);
+}
 
 inline BodyLanes& BodyAt(const StepPlan& plan, std::byte* block, std::size_t body) {
   return At<BodyLanes>(block, plan.bodies[body].offset);

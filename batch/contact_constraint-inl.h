@@ -358,10 +358,8 @@ inline Vec3 RelativeForceAcceleration(const ContactBlock& c, const Vec3& gravity
 }
 
 inline void ContactSetup(const ContactBlock& c, const ContactStepScalars& scalars) {
+  const bool plane = IsPlanePair(c.plan.kind);  // the same in every world
   ForEachChunk([&](std::size_t offset) {
-    const bool plane = c.plan.kind == ContactPairKind::kPlaneSphere ||
-                       c.plan.kind == ContactPairKind::kPlaneCapsule ||
-                       c.plan.kind == ContactPairKind::kPlaneBox;
     const ContactCandidates found =
         plane ? PlanePairCandidates(c, scalars, offset) : CorePairCandidates(c, scalars, offset);
     ContactSetupChunk(c.bodies, found, RelativeForceAcceleration(c, scalars.gravity, offset),

@@ -23,6 +23,11 @@ enum class ContactPairKind : std::uint8_t {
   kCapsuleCapsule,
 };
 const char* ContactPairKindName(ContactPairKind kind);
+// A plane with a sphere, capsule or box (else two spheres or capsules).
+inline bool IsPlanePair(ContactPairKind kind) {
+  return kind == ContactPairKind::kPlaneSphere || kind == ContactPairKind::kPlaneCapsule ||
+         kind == ContactPairKind::kPlaneBox;
+}
 
 // A shape as the collision routines read it: its frame in its body's
 // centre-of-mass frame (rotation normalised) and its sizes.

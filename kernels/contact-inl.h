@@ -76,7 +76,7 @@ HWY_INLINE LaneVec ContactRelativeNormalVelocity(const BodyPair& bodies, const V
   return Dot(Sub(v2, v1), n);
 }
 
-// Body 1's point relative to its centre of mass, in its body frame.
+// A world point relative to a body's centre of mass, in its body frame.
 HWY_INLINE Vec3 ContactLocalPoint(const BodyLanes& body, const Vec3& world,
                                   std::size_t offset) {
   return InverseRotate(LoadQuat(body.rotation, offset),
