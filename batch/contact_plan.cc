@@ -42,17 +42,6 @@ float ReachOf(const ShapeSettings& s) {
   }
 }
 
-const char* ShapeTypeName(ShapeType type) {
-  switch (type) {
-    case ShapeType::kNone: return "none";
-    case ShapeType::kSphere: return "sphere";
-    case ShapeType::kCapsule: return "capsule";
-    case ShapeType::kBox: return "box";
-    case ShapeType::kPlane: return "plane";
-  }
-  return "?";
-}
-
 // The pairs of bodies a constraint joins (lower index first).
 std::set<std::pair<std::size_t, std::size_t>> JoinedBodies(const Scene& scene) {
   std::set<std::pair<std::size_t, std::size_t>> joined;
@@ -76,6 +65,9 @@ const char* ContactPairKindName(ContactPairKind kind) {
     case ContactPairKind::kSphereSphere: return "sphere-sphere";
     case ContactPairKind::kSphereCapsule: return "sphere-capsule";
     case ContactPairKind::kCapsuleCapsule: return "capsule-capsule";
+    case ContactPairKind::kSphereBox: return "sphere-box";
+    case ContactPairKind::kCapsuleBox: return "capsule-box";
+    case ContactPairKind::kBoxBox: return "box-box";
   }
   return "?";
 }
@@ -132,13 +124,16 @@ std::vector<ContactPlan> FindContactPairs(const Scene& scene) {
       } else if (is(ShapeType::kCapsule, ShapeType::kCapsule)) {
         c.kind = ContactPairKind::kCapsuleCapsule;
         c.point_count = 1;
+      } else if (is(ShapeType::kSphere, ShapeType::kBox)) {
+        c.kind = ContactPairKind::kSphereBox;
+        c.point_count = 1;
+      } else if (is(ShapeType::kCapsule, ShapeType::kBox)) {
+        c.kind = ContactPairKind::kCapsuleBox;
+        c.point_count = 2;
       } else {
-        Refuse(c.label, "shape.type",
-               std::string("pairs a ") + ShapeTypeName(a.type) + " with a " +
-                   ShapeTypeName(b.type) +
-                   ", which contacts do not collide yet (a plane with a sphere, capsule or "
-                   "box; spheres and capsules with each other): put the two in collision "
-                   "groups that do not meet");
+        // Two boxes: two planes never get here (both are static).
+        c.kind = ContactPairKind::kBoxBox;
+        c.point_count = 4;
       }
       c.friction = float(std::sqrt(double(a.friction) * double(b.friction)));
       c.restitution = std::max(a.restitution, b.restitution);

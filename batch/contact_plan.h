@@ -21,6 +21,9 @@ enum class ContactPairKind : std::uint8_t {
   kSphereSphere,
   kSphereCapsule,
   kCapsuleCapsule,
+  kSphereBox,
+  kCapsuleBox,
+  kBoxBox,
 };
 const char* ContactPairKindName(ContactPairKind kind);
 // A plane with a sphere, capsule or box (else two spheres or capsules).
@@ -50,7 +53,8 @@ struct ContactPlan {
   float reach1 = 0.0f, reach2 = 0.0f;
   float friction, restitution;  // combined: sqrt(mu1 mu2), max(e1, e2)
   std::size_t point_count;  // points reserved: on a plane sphere 1, capsule 2, box 4;
-                            // sphere and capsule pairs 1
+                            // sphere and capsule pairs 1; a box with a sphere 1,
+                            // a capsule 2, a box 4
   std::size_t offset = 0;         // ContactLanes in the block
   std::size_t points_offset = 0;  // point_count ContactPointLanes, one after another
   std::size_t motion_offset1 = static_cast<std::size_t>(-1);  // dynamic bodies' forces
@@ -58,8 +62,7 @@ struct ContactPlan {
 };
 
 // The contact slots of a checked scene (bodies and constraints valid), in
-// solve order, without their block offsets. Throws SceneError naming both
-// bodies for a pair the filters let through whose shapes cannot be collided.
+// solve order, without their block offsets.
 std::vector<ContactPlan> FindContactPairs(const Scene& scene);
 
 }  // namespace manyworlds

@@ -16,20 +16,24 @@ namespace {
 
 using scene_bodies::Dynamic;
 
-enum class ContactId { kBoxDrop, kSphereRoll, kPile, kHopper, kQuadruped };
+enum class ContactId { kBoxDrop, kSphereRoll, kPile, kBoxStack, kBoxPile, kHopper, kQuadruped };
 
 struct ContactEntry {
   std::string_view id;
   ContactId scene;
   std::string_view description;
 };
-constexpr std::array<ContactEntry, 5> kContactScenes{{
+constexpr std::array<ContactEntry, 7> kContactScenes{{
     {"box-drop", ContactId::kBoxDrop,
      "a box dropped corner first on the ground: lands, settles, no jitter or drift"},
     {"sphere-roll", ContactId::kSphereRoll,
      "a sliding sphere on the ground: friction brings it to rolling at 5/7 of its speed"},
     {"pile", ContactId::kPile,
      "3 spheres and 3 capsules dropped on each other and the ground: shapes that touch"},
+    {"box-stack", ContactId::kBoxStack,
+     "5 boxes stacked a little askew on the ground: stands for 10 s, no creep"},
+    {"box-pile", ContactId::kBoxPile,
+     "2 boxes, 2 spheres and 2 capsules dropped on each other: boxes with every shape"},
     {"hopper", ContactId::kHopper,
      "MuJoCo's planar hopper: 4 capsules, 3 hinge position motors, feet on the ground"},
     {"quadruped", ContactId::kQuadruped,
@@ -112,6 +116,71 @@ Scene Pile() {
     }
     body.shape.friction = 0.5f;
     body.shape.restitution = 0.3f;
+    scene.AddBody(body);
+  }
+  return scene;
+}
+
+// Five boxes (half extents 0.4 x 0.25 x 0.3 m, 24 kg: 200 kg/m^3) stacked
+// 1 mm apart, each shifted 1-2 cm and turned a little about Y (0.1 rad per
+// level, so each pair's faces overlap in an octagon whose 8 points are
+// pruned to 4), friction 0.5.
+Scene BoxStack() {
+  Scene scene;
+  scene.AddBody(Ground());
+  const Float3 half{0.4f, 0.25f, 0.3f};
+  const float mass = 24.0f;
+  // I of a cuboid: m (b^2 + c^2) / 3 with half extents a, b, c.
+  const Float3 inertia{mass * (half[1] * half[1] + half[2] * half[2]) / 3.0f,
+                       mass * (half[0] * half[0] + half[2] * half[2]) / 3.0f,
+                       mass * (half[0] * half[0] + half[1] * half[1]) / 3.0f};
+  for (int i = 0; i < 5; ++i) {
+    const double yaw = 0.1 * i;
+    const Quaternion turn{0.0f, float(std::sin(yaw / 2)), 0.0f, float(std::cos(yaw / 2))};
+    const Float3 position{0.015f * float(i % 2), half[1] + float(i) * (2.0f * half[1] + 0.001f),
+                          -0.01f * float(i % 3)};
+    BodySettings box = Dynamic("box" + std::to_string(i), mass, inertia, position, turn);
+    box.shape.type = ShapeType::kBox;
+    box.shape.half_extents = half;
+    box.shape.friction = 0.5f;
+    scene.AddBody(box);
+  }
+  return scene;
+}
+
+// Two boxes, two spheres and two capsules of 1-4 kg with assorted tilts,
+// dropped from 0.5-2.5 m onto each other: every pair of shape types meets.
+Scene BoxPile() {
+  Scene scene;
+  scene.AddBody(Ground());
+  for (int i = 0; i < 6; ++i) {
+    const float x = 0.2f * float(i % 3) - 0.2f, z = 0.15f * float(i % 2) - 0.07f;
+    const float y = 0.5f + 0.4f * float(i);
+    const double angle = 0.4 + 0.5 * i, axis_x = std::cos(1.1 * i), axis_z = std::sin(1.1 * i);
+    const Quaternion tilt{float(axis_x * std::sin(angle / 2)), 0.0f,
+                          float(axis_z * std::sin(angle / 2)), float(std::cos(angle / 2))};
+    BodySettings body;
+    const std::string n = std::to_string(i / 3);
+    switch (i % 3) {
+      case 0:  // a 0.5 x 0.3 x 0.4 m box of 4 kg
+        body = Dynamic("box" + n, 4.0f, {0.083f, 0.137f, 0.113f}, {x, y, z}, tilt);
+        body.shape.type = ShapeType::kBox;
+        body.shape.half_extents = {0.25f, 0.15f, 0.2f};
+        break;
+      case 1:  // a sphere of radius 0.2 m, 1 kg
+        body = Dynamic("sphere" + n, 1.0f, {0.016f, 0.016f, 0.016f}, {x, y, z}, tilt);
+        body.shape.type = ShapeType::kSphere;
+        body.shape.radius = 0.2f;
+        break;
+      default:  // a capsule of radius 0.15 m, 0.7 m long, 2 kg
+        body = Dynamic("capsule" + n, 2.0f, {0.07f, 0.0225f, 0.07f}, {x, y, z}, tilt);
+        body.shape.type = ShapeType::kCapsule;
+        body.shape.radius = 0.15f;
+        body.shape.half_height = 0.2f;
+        break;
+    }
+    body.shape.friction = 0.5f;
+    body.shape.restitution = 0.2f;
     scene.AddBody(body);
   }
   return scene;
@@ -297,6 +366,8 @@ Scene MakeContactScene(std::string_view id) {
     case ContactId::kBoxDrop: return BoxDrop();
     case ContactId::kSphereRoll: return SphereRoll();
     case ContactId::kPile: return Pile();
+    case ContactId::kBoxStack: return BoxStack();
+    case ContactId::kBoxPile: return BoxPile();
     case ContactId::kHopper: return Hopper();
     case ContactId::kQuadruped: return Quadruped();
   }

@@ -4,9 +4,10 @@
 // ../shared/docs/jolt-contacts.md §3-§6 in its snapshot friction model).
 // Scalar reference, written from those texts; nothing of batch/ or kernels/.
 //
-// Supported pairs: a plane (static body) with a sphere, capsule or box; a
-// sphere or capsule with a sphere or capsule (any motion types, one dynamic).
-// Their points come from reference/contact_points.h.
+// Supported pairs: a plane (static body) with a sphere, capsule or box; every
+// pair of spheres, capsules and boxes (any motion types, one dynamic). Their
+// points come from reference/contact_points.h (planes, spheres and capsules)
+// and reference/box_contact_points.h (a box with a sphere, capsule or box).
 //
 // ---- Rows (Jolt's snapshot model) ----
 // Per kept point i, at the midpoint p_i = (p1_i + p2_i)/2, r1 = p_i − x1,
@@ -57,6 +58,7 @@
 
 #include "manyworlds/scene.h"
 #include "reference/body.h"
+#include "reference/box_contact_points.h"
 #include "reference/contact_points.h"
 #include "reference/math.h"
 #include "reference/world_setup.h"
@@ -79,7 +81,7 @@ template <class T>
 class ContactConstraint {
  public:
   // Bodies body1 < body2 (scene indices) and their shapes: a plane with a
-  // sphere, capsule or box (either way round), or two spheres or capsules.
+  // sphere, capsule or box (either way round), or two of sphere, capsule, box.
   // μ = sqrt(μ1 μ2), e = max(e1, e2).
   ContactConstraint(std::size_t body1, std::size_t body2, const ShapeSettings& shape1,
                     const ShapeSettings& shape2)
@@ -91,26 +93,31 @@ class ContactConstraint {
         friction_(std::sqrt(T(shape1.friction) * T(shape2.friction))),
         restitution_(std::max(T(shape1.restitution), T(shape2.restitution))) {
     if (IsPlanePair(shape1.type, shape2.type)) {
-      round_pair_ = false;
+      kind_ = PairKind::kPlane;
     } else if (IsRound(shape1.type) && IsRound(shape2.type)) {
-      round_pair_ = true;
+      kind_ = PairKind::kRound;
+    } else if (IsSolid(shape1.type) && IsSolid(shape2.type)) {
+      kind_ = PairKind::kBox;
     } else {
       throw std::invalid_argument(
-          "reference::ContactConstraint: only a plane with a sphere, capsule or box, or a "
-          "sphere or capsule with a sphere or capsule");
+          "reference::ContactConstraint: only a plane with a sphere, capsule or box, or two "
+          "of sphere, capsule and box");
     }
   }
 
   // Whether a slot of these two shape types (either order) is supported.
   static bool Supports(ShapeType type1, ShapeType type2) {
-    return IsPlanePair(type1, type2) || (IsRound(type1) && IsRound(type2));
+    return IsPlanePair(type1, type2) || (IsSolid(type1) && IsSolid(type2));
   }
 
   // The most points the slot can hold in a substep: plane with a sphere 1,
-  // with a capsule 2, with a box 4; two spheres or capsules 1.
+  // with a capsule 2, with a box 4; two spheres or capsules 1; a box with a
+  // sphere 1, with a capsule 2, with a box 4.
   int MaxPointCount() const {
-    if (round_pair_) return 1;
-    switch ((plane_is_body1_ ? shape2_ : shape1_).type) {
+    if (kind_ == PairKind::kRound) return 1;
+    const bool other_is_body2 =
+        kind_ == PairKind::kPlane ? plane_is_body1_ : shape1_.type == ShapeType::kBox;
+    switch ((other_is_body2 ? shape2_ : shape1_).type) {
       case ShapeType::kSphere: return 1;
       case ShapeType::kCapsule: return 2;
       default: return 4;  // the box
@@ -144,10 +151,10 @@ class ContactConstraint {
     friction_active_ = false;
 
     // ---- points (count_, normal_direction_, point1_, point2_)
-    if (round_pair_) {
-      FindRoundPoint(body1, body2, settings, dt);
-    } else {
-      FindPlanePoints(body1, body2, settings, dt);
+    switch (kind_) {
+      case PairKind::kPlane: FindPlanePoints(body1, body2, settings, dt); break;
+      case PairKind::kRound: FindRoundPoint(body1, body2, settings, dt); break;
+      case PairKind::kBox: FindBoxPoints(body1, body2, settings, dt); break;
     }
     if (count_ == 0) return;  // no manifold this substep
     const Vec3<T>& n = normal_direction_;
@@ -329,6 +336,7 @@ class ContactConstraint {
   static bool IsRound(ShapeType type) {
     return type == ShapeType::kSphere || type == ShapeType::kCapsule;
   }
+  static bool IsSolid(ShapeType type) { return IsRound(type) || type == ShapeType::kBox; }
   static bool IsPlanePair(ShapeType type1, ShapeType type2) {
     const auto plane_with = [](ShapeType plane, ShapeType other) {
       return plane == ShapeType::kPlane && (IsRound(other) || other == ShapeType::kBox);
@@ -421,6 +429,32 @@ class ContactConstraint {
     point1_[0] = candidate.s1 + core1.radius * candidate.normal;
     point2_[0] = candidate.s2 - core2.radius * candidate.normal;
     count_ = 1;
+  }
+
+  // A box (A) with a sphere, capsule or box (B), reference/box_contact_points.h:
+  // the normal from A to B and pairs (on A, on B); when the box is body 2 the
+  // normal is negated and each pair swapped. Two boxes: A is body 1's.
+  void FindBoxPoints(const Body<T>& body1, const Body<T>& body2,
+                     const ContactSettings<T>& settings, T dt) {
+    const bool box_is_body1 = shape1_.type == ShapeType::kBox;
+    const Body<T>& box_body = box_is_body1 ? body1 : body2;
+    const Body<T>& other_body = box_is_body1 ? body2 : body1;
+    const ContactShape<T>& box = box_is_body1 ? shape1_ : shape2_;
+    const ContactShape<T>& other = box_is_body1 ? shape2_ : shape1_;
+    const auto speculative = [&](const Vec3<T>& n) {  // n from A to B: the slot's is ±n
+      return SpeculativeDistance(body1, body2, box_is_body1 ? n : Vec3<T>(-n), settings, dt);
+    };
+    const BoxPairPoints<T> found = BoxContactPoints(
+        BoxFrame<T>{ShapeCentre(box_body, box), ShapeRotation(box_body, box), box.half_extents},
+        other, ShapeCentre(other_body, other), ShapeRotation(other_body, other), body1.position,
+        speculative);
+    if (found.count == 0) return;
+    count_ = found.count;
+    normal_direction_ = box_is_body1 ? found.normal : Vec3<T>(-found.normal);
+    for (int i = 0; i < count_; ++i) {
+      point1_[i] = box_is_body1 ? found.on_a[i] : found.on_b[i];
+      point2_[i] = box_is_body1 ? found.on_b[i] : found.on_a[i];
+    }
   }
 
   // One row: ċ = axis·(v2 − v1) + angular2·ω2 − angular1·ω1.
@@ -529,7 +563,9 @@ class ContactConstraint {
   ContactShape<T> shape1_;  // body 1's
   ContactShape<T> shape2_;  // body 2's
   bool plane_is_body1_;     // plane pairs: which body has the plane
-  bool round_pair_ = false;  // two spheres or capsules (else a plane pair)
+  // A plane with a shape; two spheres or capsules; a box with a shape.
+  enum class PairKind { kPlane, kRound, kBox };
+  PairKind kind_ = PairKind::kPlane;
   T friction_;     // μ = sqrt(μ1 μ2)
   T restitution_;  // e = max(e1, e2)
 

@@ -326,9 +326,9 @@ class World {
   // The contact slots of docs/contacts.md: every pair i < j of bodies with
   // shapes whose groups and masks meet, with at least one dynamic body, not
   // joined by a constraint (unless either shape collides with joined bodies).
-  // Such a pair must be a plane with a sphere, capsule or box, or two spheres
-  // or capsules (sphere–sphere, sphere–capsule, capsule–capsule); a plane is
-  // on a static body.
+  // Such a pair must be a plane with a sphere, capsule or box, or two of
+  // sphere, capsule and box; a plane is on a static body (so two planes never
+  // make a slot).
   void MakeContacts(const Scene& scene) {
     const std::vector<BodySettings>& settings = scene.bodies();
     for (std::size_t i = 0; i < settings.size(); ++i) {
@@ -364,8 +364,8 @@ class World {
           throw std::invalid_argument(
               "reference::World: " + BodyName(scene, i) + " and " + BodyName(scene, j) +
               " collide but their pair of shapes is not supported (only a plane with a "
-              "sphere, capsule or box, and spheres and capsules with each other): put them "
-              "in collision groups that do not meet");
+              "sphere, capsule or box, and spheres, capsules and boxes with each other): put "
+              "them in collision groups that do not meet");
         }
         contacts_.emplace_back(i, j, shape_i, shape_j);
       }

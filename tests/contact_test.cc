@@ -143,24 +143,29 @@ TEST(ContactRefusalTest, BadShapesAndPairsAreNamed) {
   EXPECT_THAT(plane, HasSubstr("shape.type"));
   EXPECT_THAT(plane, HasSubstr("only a static body"));
 
-  // A pair not collided yet: a sphere and a box.
-  Scene ball_and_box;
-  ball_and_box.AddBody(Ball("left", {0, 0, 0}));
-  ball_and_box.AddBody(Ball("right", {2, 0, 0}));
-  ball_and_box.bodies()[1].shape.type = ShapeType::kBox;
-  ball_and_box.bodies()[0].shape.collision_mask = ball_and_box.bodies()[1].shape.collision_mask = 2;
-  const std::string pair = BuildRefusal(ball_and_box);
-  EXPECT_THAT(pair, HasSubstr("contact body #0 'left' / body #1 'right'"));
-  EXPECT_THAT(pair, HasSubstr("sphere with a box"));
-  EXPECT_THAT(pair, HasSubstr("collision groups"));
-  // The way out the message names works.
-  ball_and_box.bodies()[1].shape.collision_group = 4;
-  EXPECT_EQ(BuildRefusal(ball_and_box), "");
-  // Spheres and capsules meet each other.
-  Scene balls = ball_and_box;
-  balls.bodies()[1].shape.type = ShapeType::kCapsule;
-  balls.bodies()[1].shape.collision_group = 2;
-  EXPECT_THAT(Batch(balls, 1).Plan(), HasSubstr("sphere-capsule, up to 1 point(s)"));
+  // Every pair of sphere, capsule and box makes a slot, whichever is body 1,
+  // with the points its kind reserves.
+  struct PairCase {
+    ShapeType left, right;
+    const char* plan;
+  };
+  for (const PairCase& c :
+       {PairCase{ShapeType::kSphere, ShapeType::kCapsule, "sphere-capsule, up to 1 point(s)"},
+        PairCase{ShapeType::kSphere, ShapeType::kBox, "sphere-box, up to 1 point(s)"},
+        PairCase{ShapeType::kBox, ShapeType::kSphere, "sphere-box, up to 1 point(s)"},
+        PairCase{ShapeType::kCapsule, ShapeType::kBox, "capsule-box, up to 2 point(s)"},
+        PairCase{ShapeType::kBox, ShapeType::kCapsule, "capsule-box, up to 2 point(s)"},
+        PairCase{ShapeType::kBox, ShapeType::kBox, "box-box, up to 4 point(s)"}}) {
+    Scene pair;
+    pair.AddBody(Ball("left", {0, 0, 0}));
+    pair.AddBody(Ball("right", {2, 0, 0}));
+    pair.bodies()[0].shape.type = c.left;
+    pair.bodies()[1].shape.type = c.right;
+    pair.bodies()[0].shape.collision_mask = pair.bodies()[1].shape.collision_mask = 2;
+    const std::string plan = Batch(pair, 1).Plan();
+    EXPECT_THAT(plan, HasSubstr("contact body #0 'left' / body #1 'right'")) << c.plan;
+    EXPECT_THAT(plan, HasSubstr(c.plan));
+  }
 
   const auto refusal_of = [](const char* field, auto edit) {
     Scene scene;

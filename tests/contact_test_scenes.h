@@ -194,8 +194,8 @@ inline Scene SunkBoxScene(double depth) {
 }
 
 // A box (half 1) and a sphere (r 1) side by side, `gap` above the floor, both
-// moving at `velocity` (m/s, +Y up). Their groups do not meet each other (a
-// box-sphere pair is not supported), only the floor.
+// moving at `velocity` (m/s, +Y up). Their groups do not meet each other,
+// only the floor, so each test's slots are the two with the floor.
 inline Scene BoxAndSphere(double gap, double velocity, float restitution = 0.0f) {
   Scene scene;
   scene.AddBody(Floor(0.2f, restitution));

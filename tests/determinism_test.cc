@@ -204,7 +204,8 @@ TEST_P(DeterminismTest, Avx2AndAvx3GiveIdenticalBits) {
 
 INSTANTIATE_TEST_SUITE_P(ReferenceScenes, DeterminismTest,
                          ::testing::Values("cartpole", "chain16", "rackpinion", "geartrain", "ragdoll",
-                                           "box-drop", "sphere-roll", "pile", "hopper"),
+                                           "box-drop", "sphere-roll", "pile", "box-stack", "box-pile",
+                                           "hopper"),
                          [](const auto& info) {
                            std::string name = info.param;
                            for (char& c : name) c = c == '-' ? '_' : c;  // a test name

@@ -960,9 +960,14 @@ TYPED_TEST(ReferenceContactTest, RefusesPlaneOnNonStaticBody) {
   }
 }
 
-// A pair that passes the filter but is neither a plane with a sphere, capsule
-// or box nor two spheres or capsules is refused, naming both bodies.
-TYPED_TEST(ReferenceContactTest, RefusesUnsupportedPairNamingBothBodies) {
+// A box with a sphere, capsule or box (either order) was refused by name
+// before box pairs were built; now each such pair makes a slot: with the
+// floor, 3 slots in pair order, the pair's last, body 1 the lower index,
+// holding at most 1 point (sphere), 2 (capsule) or 4 (box) whichever body the
+// box is. In groups that do not meet, only the floor's 2. Two planes: both
+// bodies are static (a plane is on a static body only), so the pair makes no
+// slot at all and is not refused.
+TYPED_TEST(ReferenceContactTest, BoxPairsMakeSlots) {
   using T = TypeParam;
   const BodySettings sphere = Sphere(0.5f, {0.0f, 2.0f, 0.0f});
   const BodySettings capsule = Capsule(0.3f, 0.5f, {0.0f, 2.0f, 0.0f});
@@ -970,35 +975,34 @@ TYPED_TEST(ReferenceContactTest, RefusesUnsupportedPairNamingBothBodies) {
   struct Case {
     const char* name;
     BodySettings left, right;
+    int max_points;
   };
-  for (const Case& c : {Case{"sphere-box", sphere, box}, Case{"box-sphere", box, sphere},
-                        Case{"capsule-box", capsule, box}, Case{"box-box", box, box}}) {
+  for (const Case& c : {Case{"sphere-box", sphere, box, 1}, Case{"box-sphere", box, sphere, 1},
+                        Case{"capsule-box", capsule, box, 2}, Case{"box-capsule", box, capsule, 2},
+                        Case{"box-box", box, box, 4}}) {
     SCOPED_TRACE(c.name);
     Scene scene;
     scene.AddBody(Floor());
     BodySettings a = c.left, b = c.right;
-    a.name = "left one";
-    b.name = "right one";
+    a.position = {0.0f, 2.0f, 0.0f};
     b.position = {3.0f, 2.0f, 0.0f};
     scene.AddBody(a);
     scene.AddBody(b);
-    try {
-      World<T> world(scene);
-      ADD_FAILURE() << "the pair was accepted";
-    } catch (const std::invalid_argument& error) {
-      const std::string what = error.what();
-      EXPECT_NE(what.find("left one"), std::string::npos) << what;
-      EXPECT_NE(what.find("right one"), std::string::npos) << what;
-    }
-    // In groups that do not meet, the same scene is fine.
+    World<T> world(scene);
+    ASSERT_EQ(world.contact_count(), 3u);
+    const ContactConstraint<T>& pair = world.contact(2);
+    EXPECT_EQ(pair.body1(), 1u);
+    EXPECT_EQ(pair.body2(), 2u);
+    EXPECT_EQ(pair.MaxPointCount(), c.max_points);
+    world.Step(Settings());
+    EXPECT_EQ(pair.PointCount(), 0);  // 3 m apart
+    // In groups that do not meet, only the floor's slots.
     scene.bodies()[1].shape.collision_group = 2;
     scene.bodies()[1].shape.collision_mask = 1;
     scene.bodies()[2].shape.collision_group = 4;
     scene.bodies()[2].shape.collision_mask = 1;
     EXPECT_EQ(World<T>(scene).contact_count(), 2u);
   }
-  // Two planes: both bodies are static (a plane is on a static body only), so
-  // the pair makes no slot at all and is not refused.
   Scene planes;
   planes.AddBody(Floor());
   BodySettings wall = Floor();

@@ -68,7 +68,7 @@ Scene ComparisonScene(const std::string& id) {
 // both ways within a block).
 bool Kicked(const std::string& id) {
   return id == "mixed" || id == "more_types" || id == "box-drop" || id == "sphere-roll" ||
-         id == "pile";
+         id == "pile" || id == "box-stack" || id == "box-pile";
 }
 
 // Scene id, Highway target bit.
@@ -216,8 +216,8 @@ INSTANTIATE_TEST_SUITE_P(
     // Its parts are compared lane by lane at the part level; the scene is
     // checked for determinism, health and staying assembled (batch_test.cc).
     ::testing::Combine(::testing::Values("cartpole", "chain16", "rackpinion", "geartrain", "mixed",
-                                         "more_types", "box-drop", "sphere-roll", "pile", "hopper",
-                                         "quadruped"),
+                                         "more_types", "box-drop", "sphere-roll", "pile", "box-stack",
+                                         "box-pile", "hopper", "quadruped"),
                        ::testing::ValuesIn(SupportedStepTargets())),
     [](const auto& info) {
       std::string name = std::get<0>(info.param) + "_" +

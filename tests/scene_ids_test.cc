@@ -41,7 +41,7 @@ TEST(SceneIds, UnknownIdListsEveryValidIdGrouped) {
   const std::string make = RefusalOf([] { (void)MakeScene("nosuch"); });
   EXPECT_THAT(make, StartsWith("unknown scene 'nosuch'; valid ids: reference scenes cartpole, "));
   EXPECT_THAT(make, HasSubstr("; stress scenes chain16-r1000, chain64, spring-0.1"));
-  EXPECT_THAT(make, HasSubstr("; contact scenes box-drop, sphere-roll, pile"));
+  EXPECT_THAT(make, HasSubstr("; contact scenes box-drop, sphere-roll, pile, box-stack, box-pile"));
   for (const std::string& id : AllSceneIds()) EXPECT_THAT(make, HasSubstr(id));
   // The other entry points that take any id say the same.
   EXPECT_EQ(RefusalOf([] { (void)SceneStepSettings("nosuch"); }), make);
