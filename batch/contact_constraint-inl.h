@@ -54,7 +54,8 @@ inline ContactCandidates SlotCandidates(const ContactBlock& c, const ContactStep
 
 // The broad phase, per chunk: whether the two shapes may come within the
 // speculative distance in any world, from the bounding spheres about the
-// bodies' centres of mass (radius: the shape's reach), the distance grown as
+// bodies' centres of mass (radius: the shape's reach), or for a plane the
+// height of the other body's centre of mass above it, the distance grown as
 // SpeculativeDistance grows it (|v2 - v1| bounds the approach along any n).
 // The bound is loosened by 1e-3 of the reach and 1 mm against rounding, so a
 // lane it rules out has no manifold by any rounding of the points.
@@ -74,6 +75,14 @@ inline LaneMask MayTouch(const ContactBlock& c, const ContactStepScalars& scalar
     reach = hn::MulAdd(approach, scalars.part.delta_time, reach);
   }
   reach = hn::MulAdd(reach, Splat(1.001f), Splat(1.0e-3f));
+  if (IsPlanePair(c.plan.kind)) {
+    const bool plane_is_body1 = c.plan.shape1.type == ShapeType::kPlane;
+    const ShapeFrame plane = plane_is_body1 ? WorldShapeFrame(*b.body1, c.plan.shape1, offset)
+                                            : WorldShapeFrame(*b.body2, c.plan.shape2, offset);
+    const Vec3 normal = Rotate(plane.rotation, Vec3{Zero(), Splat(1.0f), Zero()});
+    const Vec3 centre = LoadVec3(plane_is_body1 ? b.body2->position : b.body1->position, offset);
+    return hn::Le(Dot(normal, Sub(centre, plane.centre)), reach);
+  }
   const Vec3 between = Sub(LoadVec3(b.body2->position, offset), LoadVec3(b.body1->position, offset));
   return hn::Le(LengthSquared(between), hn::Mul(reach, reach));
 }
@@ -94,10 +103,8 @@ inline void ClearContactChunk(const ContactBlock& c, std::size_t offset) {
 }
 
 inline void ContactSetup(const ContactBlock& c, const ContactStepScalars& scalars) {
-  // A plane is unbounded: its slots always find their points.
-  const bool bounded = !IsPlanePair(c.plan.kind);
   ForEachChunk([&](std::size_t offset) {
-    if (bounded && !AnyLane(MayTouch(c, scalars, offset))) {
+    if (!AnyLane(MayTouch(c, scalars, offset))) {
       ClearContactChunk(c, offset);
       return;
     }

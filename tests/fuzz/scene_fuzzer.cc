@@ -1,5 +1,6 @@
 // libFuzzer target: random bytes -> a scene (every motion type, every
-// constraint type of scene.h with random settings), sometimes passed through
+// constraint type of scene.h with random settings, every shape type in
+// random frames, so bodies start inside each other and the ground), sometimes passed through
 // LimitMassRange, a Batch of a few worlds, then a few steps with random
 // actions, states, resets and per-world parameters written in (NaN,
 // infinities and huge values included).
@@ -141,6 +142,29 @@ MotorSettings Motor(FuzzedDataProvider& in) {
   return motor;
 }
 
+// A shape of any type (a plane on a moving body, zero or huge sizes and bad
+// frictions now and then: refused by name), in a frame of its own; groups
+// and masks that mostly meet.
+ShapeSettings Shape(FuzzedDataProvider& in) {
+  ShapeSettings shape;
+  shape.type = EnumValue<ShapeType>(in, 5);
+  shape.radius = Float(in, 0.02f, 2);
+  shape.half_height = Float(in, 0.02f, 2);
+  shape.half_extents = Vec(in, 0.02f, 2);
+  if (in.ConsumeBool()) {
+    shape.position = Vec(in, -1, 1);
+    shape.rotation = Quat(in);
+  }
+  shape.friction = Float(in, 0, 2);
+  shape.restitution = Float(in, 0, 1);
+  if (in.ConsumeIntegral<std::uint8_t>() >= 224) {
+    shape.collision_group = in.ConsumeIntegral<std::uint32_t>();
+    shape.collision_mask = in.ConsumeIntegral<std::uint32_t>();
+  }
+  shape.collide_with_joined = in.ConsumeBool();
+  return shape;
+}
+
 BodySettings Body(FuzzedDataProvider& in) {
   BodySettings body;
   body.motion_type = EnumValue<MotionType>(in, 3);
@@ -160,6 +184,7 @@ BodySettings Body(FuzzedDataProvider& in) {
   }
   // Every bit pattern of the byte, including kNone and bits above kAll.
   if (in.ConsumeBool()) body.allowed_dofs = static_cast<AllowedDofs>(in.ConsumeIntegral<std::uint8_t>());
+  if (in.ConsumeBool()) body.shape = Shape(in);
   return body;
 }
 
@@ -392,6 +417,13 @@ StepSettings Settings(FuzzedDataProvider& in) {
   if (in.ConsumeBool()) s.gravity = Vec(in, -20, 20);
   s.unhealthy_worlds = EnumValue<UnhealthyWorlds>(in, 2);
   s.gyroscopic = in.ConsumeBool();
+  if (in.ConsumeBool()) {  // contact settings (negative or not finite: refused)
+    s.speculative_contact_distance = Float(in, 0, 0.1f);
+    s.penetration_slop = Float(in, 0, 0.05f);
+    s.max_penetration_distance = Float(in, 0, 1);
+    s.min_velocity_for_restitution = Float(in, 0, 5);
+    s.speculative_contacts_from_velocity = in.ConsumeBool();
+  }
   return s;
 }
 
