@@ -144,16 +144,33 @@ inline LaneVec BoxSpeculative(const ContactBlock& c, const ContactStepScalars& s
   return SpeculativeDistance(c, scalars, a_is_body2 ? Neg(normal) : normal, offset);
 }
 
+// A slot's box (A) and its other shape (B, a sphere or capsule) in one chunk.
+struct BoxAndOther {
+  bool box_is_body2;
+  BoxFrame box;
+  const ContactShape& other;
+  ShapeFrame other_frame;
+};
+
+inline BoxAndOther SplitBoxPair(const ContactBlock& c, std::size_t offset) {
+  const bool box_is_body2 = c.plan.shape2.type == ShapeType::kBox;
+  const ContactShape& other = box_is_body2 ? c.plan.shape1 : c.plan.shape2;
+  return {box_is_body2,
+          box_is_body2 ? WorldBox(*c.bodies.body2, c.plan.shape2, offset)
+                       : WorldBox(*c.bodies.body1, c.plan.shape1, offset),
+          other,
+          WorldShapeFrame(box_is_body2 ? *c.bodies.body1 : *c.bodies.body2, other, offset)};
+}
+
 // ---- Sphere and box: one point ----
 inline ContactCandidates SphereBoxCandidates(const ContactBlock& c,
                                              const ContactStepScalars& scalars,
                                              std::size_t offset) {
-  const bool box_is_body2 = c.plan.shape2.type == ShapeType::kBox;
-  const ContactShape& sphere_shape = box_is_body2 ? c.plan.shape1 : c.plan.shape2;
-  const BoxFrame box = box_is_body2 ? WorldBox(*c.bodies.body2, c.plan.shape2, offset)
-                                    : WorldBox(*c.bodies.body1, c.plan.shape1, offset);
-  const ShapeFrame sphere = WorldShapeFrame(box_is_body2 ? *c.bodies.body1 : *c.bodies.body2,
-                                            sphere_shape, offset);
+  const BoxAndOther pair = SplitBoxPair(c, offset);
+  const bool box_is_body2 = pair.box_is_body2;
+  const BoxFrame& box = pair.box;
+  const ContactShape& sphere_shape = pair.other;
+  const ShapeFrame& sphere = pair.other_frame;
   const Vec3 l = box.Local(sphere.centre);
   const Vec3 clamped = ClampToBox(l, box.half);
   const Vec3 out = Sub(l, clamped);
@@ -231,12 +248,11 @@ inline void ClosestOfSegmentAndBox(const CoreSegment& core, const Vec3& half, Ve
 inline ContactCandidates CapsuleBoxCandidates(const ContactBlock& c,
                                               const ContactStepScalars& scalars,
                                               std::size_t offset) {
-  const bool box_is_body2 = c.plan.shape2.type == ShapeType::kBox;
-  const ContactShape& capsule_shape = box_is_body2 ? c.plan.shape1 : c.plan.shape2;
-  const BoxFrame box = box_is_body2 ? WorldBox(*c.bodies.body2, c.plan.shape2, offset)
-                                    : WorldBox(*c.bodies.body1, c.plan.shape1, offset);
-  const ShapeFrame capsule =
-      WorldShapeFrame(box_is_body2 ? *c.bodies.body1 : *c.bodies.body2, capsule_shape, offset);
+  const BoxAndOther pair = SplitBoxPair(c, offset);
+  const bool box_is_body2 = pair.box_is_body2;
+  const BoxFrame& box = pair.box;
+  const ContactShape& capsule_shape = pair.other;
+  const ShapeFrame& capsule = pair.other_frame;
   // The capsule's axis (its +Y) and core a -> b in box coordinates.
   const Vec3 axis_unit =
       box.LocalVector(Rotate(capsule.rotation, Vec3{Zero(), Splat(1.0f), Zero()}));

@@ -87,6 +87,13 @@ Scene SphereRoll() {
   return scene;
 }
 
+// A turn by `angle` about the axis in the XZ plane at `heading` from X.
+Quaternion TiltInXZ(double angle, double heading) {
+  const double s = std::sin(angle / 2);
+  return {float(std::cos(heading) * s), 0.0f, float(std::sin(heading) * s),
+          float(std::cos(angle / 2))};
+}
+
 // Spheres (r 0.3 m) and capsules (r 0.2 m, 0.8 m long) of 1 kg and
 // assorted tilts, dropped from 1-3 m so that they land on each other, roll
 // and come to rest on the ground in a heap.
@@ -97,9 +104,7 @@ Scene Pile() {
     const float x = 0.25f * float(i % 3) - 0.25f, z = 0.2f * float(i % 2) - 0.1f;
     const float y = 1.0f + 0.45f * float(i);
     // About an axis in the XZ plane, a different tilt for each body.
-    const double angle = 0.5 + 0.4 * i, axis_x = std::cos(1.3 * i), axis_z = std::sin(1.3 * i);
-    const Quaternion tilt{float(axis_x * std::sin(angle / 2)), 0.0f,
-                          float(axis_z * std::sin(angle / 2)), float(std::cos(angle / 2))};
+    const Quaternion tilt = TiltInXZ(0.5 + 0.4 * i, 1.3 * i);
     BodySettings body;
     if (i % 2 == 0) {
       body = Dynamic("sphere" + std::to_string(i / 2), 1.0f, {0.036f, 0.036f, 0.036f},
@@ -156,9 +161,7 @@ Scene BoxPile() {
   for (int i = 0; i < 6; ++i) {
     const float x = 0.2f * float(i % 3) - 0.2f, z = 0.15f * float(i % 2) - 0.07f;
     const float y = 0.5f + 0.4f * float(i);
-    const double angle = 0.4 + 0.5 * i, axis_x = std::cos(1.1 * i), axis_z = std::sin(1.1 * i);
-    const Quaternion tilt{float(axis_x * std::sin(angle / 2)), 0.0f,
-                          float(axis_z * std::sin(angle / 2)), float(std::cos(angle / 2))};
+    const Quaternion tilt = TiltInXZ(0.4 + 0.5 * i, 1.1 * i);
     BodySettings body;
     const std::string n = std::to_string(i / 3);
     switch (i % 3) {
