@@ -94,6 +94,39 @@ std::array<Float3, 2> Anchors(const Scene& scene, const ConstraintSettings& sett
       settings);
 }
 
+// A body's collision shape as recorded (docs/recording.md): the sizes its
+// type uses (radius, half_height, half_extents x, y, z), the others 0; a body
+// without a shape has every size and the position 0 and the rotation (0, 0,
+// 0, 1), whatever its ShapeSettings hold.
+struct RecordedShape {
+  std::array<float, 5> size{};
+  Float3 position{0, 0, 0};
+  Quaternion rotation{0, 0, 0, 1};
+};
+
+RecordedShape Recorded(const ShapeSettings& shape) {
+  RecordedShape r;
+  switch (shape.type) {
+    case ShapeType::kNone:
+      return r;
+    case ShapeType::kSphere:
+      r.size[0] = shape.radius;
+      break;
+    case ShapeType::kCapsule:
+      r.size[0] = shape.radius;
+      r.size[1] = shape.half_height;
+      break;
+    case ShapeType::kBox:
+      std::copy(shape.half_extents.begin(), shape.half_extents.end(), r.size.begin() + 2);
+      break;
+    case ShapeType::kPlane:
+      break;
+  }
+  r.position = shape.position;
+  r.rotation = shape.rotation;
+  return r;
+}
+
 template <class T>
 std::span<const std::byte> Bytes(const std::vector<T>& values) {
   return std::as_bytes(std::span(values));
@@ -175,8 +208,9 @@ Recorder::Recorder(const Batch& batch, const std::string& path,
              Bytes(std::vector<std::int64_t>(s.worlds.begin(), s.worlds.end())));
 
   std::vector<std::string> body_names;
-  std::vector<std::uint8_t> motion_types;
-  std::vector<float> masses, inertia_diagonals, inertia_rotations;
+  std::vector<std::uint8_t> motion_types, shape_types;
+  std::vector<float> masses, inertia_diagonals, inertia_rotations, shape_sizes, shape_positions,
+      shape_rotations;
   for (const BodySettings& body : scene.bodies()) {
     body_names.push_back(body.name);
     motion_types.push_back(static_cast<std::uint8_t>(body.motion_type));
@@ -185,12 +219,21 @@ Recorder::Recorder(const Batch& batch, const std::string& path,
                              body.inertia_diagonal.end());
     inertia_rotations.insert(inertia_rotations.end(), body.inertia_rotation.begin(),
                              body.inertia_rotation.end());
+    const RecordedShape shape = Recorded(body.shape);
+    shape_types.push_back(static_cast<std::uint8_t>(body.shape.type));
+    shape_sizes.insert(shape_sizes.end(), shape.size.begin(), shape.size.end());
+    shape_positions.insert(shape_positions.end(), shape.position.begin(), shape.position.end());
+    shape_rotations.insert(shape_rotations.end(), shape.rotation.begin(), shape.rotation.end());
   }
   AddTextArray(w, "body_name", body_names, Shape({B}));
   w.AddArray("body_motion_type", "|u1", Shape({B}), Bytes(motion_types));
   w.AddArray("body_mass", "<f4", Shape({B}), Bytes(masses));
   w.AddArray("body_inertia_diagonal", "<f4", Shape({B, 3}), Bytes(inertia_diagonals));
   w.AddArray("body_inertia_rotation", "<f4", Shape({B, 4}), Bytes(inertia_rotations));
+  w.AddArray("body_shape_type", "|u1", Shape({B}), Bytes(shape_types));
+  w.AddArray("body_shape_size", "<f4", Shape({B, 5}), Bytes(shape_sizes));
+  w.AddArray("body_shape_position", "<f4", Shape({B, 3}), Bytes(shape_positions));
+  w.AddArray("body_shape_rotation", "<f4", Shape({B, 4}), Bytes(shape_rotations));
 
   std::vector<std::string> names, types, coordinate_names;
   std::vector<std::int32_t> constraint_bodies, coordinate_constraints;

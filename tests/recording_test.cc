@@ -1,7 +1,8 @@
 // Recorder (include/manyworlds/recording.h): the file is the NPZ numpy.load
 // reads (checked by a small ZIP + NPY reader here, and by Debian's numpy when
 // /usr/bin/python3 has it), its frames equal GetState / GetJointCoordinates
-// bit for bit, and no file is left after an error or without Close.
+// bit for bit, the bodies' collision shapes are the scene's, and no file is
+// left after an error or without Close.
 
 #include <sys/resource.h>
 
@@ -147,7 +148,7 @@ void CheckRagdollFile(const fs::path& path, const Expected& expected) {
   const std::size_t B = batch.body_count(), J = batch.JointCoordinatesPerWorld(), T = kSteps + 1;
   const std::vector<std::size_t> worlds{7, 0, 19};
   auto members = ReadNpz(path);
-  ASSERT_EQ(members.size(), 20u);
+  ASSERT_EQ(members.size(), 24u);
   for (const auto& [name, m] : members) {
     EXPECT_EQ(npz::Crc32(std::as_bytes(std::span(m.raw))), m.crc) << name;
   }
@@ -205,10 +206,126 @@ TEST_F(RecordingTest, NumpyLoadsIt) {
       "    assert d['joint_coordinates'].shape == (T, 3, J) and d['health'].shape == (T, 3)\n"
       "    assert str(d['scene']) == 'ragdoll' and d['body_name'][0] == 'pelvis'\n"
       "    assert d['constraint_anchor'].shape == (len(d['constraint_name']), 2, 3)\n"
-      "    assert list(d['world']) == [7, 0, 19] and d['format_version'][0] == 1\n";
+      "    assert list(d['world']) == [7, 0, 19] and d['format_version'][0] == 1\n"
+      "    assert d['body_shape_type'].dtype == np.uint8 and d['body_shape_type'].shape == (B,)\n"
+      "    assert d['body_shape_size'].dtype == np.float32 and d['body_shape_size'].shape == (B, 5)\n"
+      "    assert d['body_shape_position'].shape == (B, 3)\n"
+      "    assert d['body_shape_rotation'].shape == (B, 4)\n"
+      "    assert not d['body_shape_type'].any() and not d['body_shape_size'].any()\n";
   RecordRagdoll(folder_ / "a.npz", false);
   RecordRagdoll(folder_ / "b.npz", true);
   EXPECT_NO_THROW(tools::RunInFolder(python, {"-c", check, "a.npz", "b.npz"}, folder_));
+}
+
+// Every shape type: the arrays body_shape_* hold the settings' values bit
+// for bit, only the sizes a type uses (the others 0), and a body without a
+// shape writes zeros and the identity, whatever its ShapeSettings hold.
+TEST_F(RecordingTest, ShapesAreTheScenes) {
+  Scene scene;
+  BodySettings ground;
+  ground.name = "ground";
+  ground.motion_type = MotionType::kStatic;
+  ground.position = {0.0f, -0.25f, 0.0f};
+  ground.shape.type = ShapeType::kPlane;
+  ground.shape.position = {0.0f, 0.125f, 0.0f};
+  ground.shape.rotation = {0.0f, 0.0f, 0.09983342f, 0.99500417f};  // 0.2 rad about Z
+  ground.shape.radius = 7.0f;  // not used by a plane: recorded as 0
+  scene.AddBody(ground);
+  BodySettings sphere;
+  sphere.name = "sphere";
+  sphere.position = {0.0f, 1.0f, 0.0f};
+  sphere.shape.type = ShapeType::kSphere;
+  sphere.shape.radius = 0.3f;
+  sphere.shape.half_height = 2.0f;  // not used by a sphere
+  scene.AddBody(sphere);
+  BodySettings capsule;
+  capsule.name = "capsule";
+  capsule.position = {2.0f, 1.0f, 0.0f};
+  capsule.shape.type = ShapeType::kCapsule;
+  capsule.shape.radius = 0.15f;
+  capsule.shape.half_height = 0.35f;
+  capsule.shape.half_extents = {9.0f, 9.0f, 9.0f};  // not used by a capsule
+  capsule.shape.position = {0.1f, -0.2f, 0.3f};
+  capsule.shape.rotation = {0.0f, 0.0f, -0.70710677f, 0.70710677f};  // Y onto X
+  scene.AddBody(capsule);
+  BodySettings box;
+  box.name = "box";
+  box.position = {-2.0f, 1.0f, 0.0f};
+  box.shape.type = ShapeType::kBox;
+  box.shape.half_extents = {0.4f, 0.25f, 0.3f};
+  box.shape.radius = 5.0f;  // not used by a box
+  box.shape.rotation = {0.0f, 0.38268343f, 0.0f, 0.92387953f};  // 45 degrees about Y
+  scene.AddBody(box);
+  BodySettings none;
+  none.name = "none";
+  none.position = {0.0f, 3.0f, 0.0f};
+  none.shape.radius = 0.7f;  // type kNone: none of this is recorded
+  none.shape.position = {1.0f, 2.0f, 3.0f};
+  none.shape.rotation = {0.0f, 1.0f, 0.0f, 0.0f};
+  scene.AddBody(none);
+
+  Batch batch(scene, 2);
+  const fs::path path = folder_ / "shapes.npz";
+  Recorder recorder(batch, path.string(), std::vector<std::size_t>{1});
+  recorder.Capture(batch, 0.0, 0);
+  recorder.Close();
+  auto members = ReadNpz(path);
+  const auto header = [&](const std::string& name, const std::string& descr,
+                          const std::string& shape) {
+    const std::string expected =
+        "{'descr': '" + descr + "', 'fortran_order': False, 'shape': " + shape + ", }";
+    EXPECT_EQ(members[name].header.substr(0, expected.size()), expected) << name;
+  };
+  header("body_shape_type", "|u1", "(5,)");
+  header("body_shape_size", "<f4", "(5, 5)");
+  header("body_shape_position", "<f4", "(5, 3)");
+  header("body_shape_rotation", "<f4", "(5, 4)");
+
+  EXPECT_EQ(Values<std::uint8_t>(members["body_shape_type"]),
+            std::vector<std::uint8_t>({4, 1, 2, 3, 0}));
+  // Bits, not values: the recorded floats are the settings' own.
+  const auto bits = [](const std::vector<float>& values) {
+    std::vector<std::uint32_t> b(values.size());
+    std::memcpy(b.data(), values.data(), values.size() * 4);
+    return b;
+  };
+  const auto size = bits(Values<float>(members["body_shape_size"]));
+  EXPECT_EQ(size, bits({0, 0, 0, 0, 0,                       // plane
+                        0.3f, 0, 0, 0, 0,                    // sphere
+                        0.15f, 0.35f, 0, 0, 0,               // capsule
+                        0, 0, 0.4f, 0.25f, 0.3f,             // box
+                        0, 0, 0, 0, 0}));                    // none
+  const auto position = bits(Values<float>(members["body_shape_position"]));
+  EXPECT_EQ(position, bits({0.0f, 0.125f, 0.0f, 0, 0, 0, 0.1f, -0.2f, 0.3f, 0, 0, 0, 0, 0, 0}));
+  const auto rotation = bits(Values<float>(members["body_shape_rotation"]));
+  EXPECT_EQ(rotation, bits({0.0f, 0.0f, 0.09983342f, 0.99500417f,    // plane
+                            0, 0, 0, 1,                              // sphere
+                            0.0f, 0.0f, -0.70710677f, 0.70710677f,   // capsule
+                            0.0f, 0.38268343f, 0.0f, 0.92387953f,    // box
+                            0, 0, 0, 1}));                           // none
+}
+
+// The contact scenes record the shapes they collide with: box-stack is a
+// ground plane under five boxes.
+TEST_F(RecordingTest, ContactScenesRecordTheirShapes) {
+  const Scene scene = MakeScene("box-stack");
+  Batch batch(scene, 1);
+  const fs::path path = folder_ / "box-stack.npz";
+  Recorder recorder(batch, path.string(), std::vector<std::size_t>{0});
+  recorder.Capture(batch, 0.0, 0);
+  recorder.Close();
+  auto members = ReadNpz(path);
+  const auto types = Values<std::uint8_t>(members["body_shape_type"]);
+  const auto sizes = Values<float>(members["body_shape_size"]);
+  ASSERT_EQ(types.size(), scene.bodies().size());
+  ASSERT_EQ(sizes.size(), 5 * scene.bodies().size());
+  EXPECT_EQ(types, std::vector<std::uint8_t>({4, 3, 3, 3, 3, 3}));
+  for (std::size_t b = 0; b < types.size(); ++b) {
+    const ShapeSettings& shape = scene.bodies()[b].shape;
+    EXPECT_EQ(types[b], static_cast<std::uint8_t>(shape.type)) << b;
+    if (shape.type != ShapeType::kBox) continue;
+    for (int k = 0; k < 3; ++k) EXPECT_EQ(sizes[5 * b + 2 + std::size_t(k)], shape.half_extents[k]);
+  }
 }
 
 TEST_F(RecordingTest, NoFileWithoutClose) {

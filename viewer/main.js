@@ -11,7 +11,8 @@
 //                   its window when the page was laid out
 //   bare=1          the 3D view alone, no controls
 // Once a frame is drawn, #viewer-state holds JSON of each body's projected
-// centre of mass (page pixels) and colour, and the title ends in "ready".
+// centre of mass (page pixels), colour and shape, the count of each kind of
+// shape drawn, and the title ends in "ready".
 "use strict";
 
 (function () {
@@ -35,7 +36,8 @@
       scene: recording.scene, time: currentTime, frame: view.frame,
       frameTime: recording.time[view.frame], background: "#" + ManyworldsView.BACKGROUND.toString(16),
       canvas: view.renderer.domElement.getBoundingClientRect(),
-      bodies: view.projectedBodies(),
+      bodies: view.projectedBodies(), shapes: view.drawnShapes(),
+      recordedShapes: recording.hasShapes(),
     });
     document.title = "manyworlds viewer: " + (recording.scene || "recording") + " ready";
   }

@@ -1,6 +1,7 @@
 // A recording (docs/recording.md) as the viewer uses it: the NPZ's arrays
-// checked against format 1, and the pose of any body of any recorded world
-// at any frame.
+// checked against format 1, the bodies' collision shapes (when the file has
+// them: older files of format 1 do not), and the pose of any body of any
+// recorded world at any frame.
 "use strict";
 
 var ManyworldsRecording = (function () {
@@ -12,6 +13,12 @@ var ManyworldsRecording = (function () {
     body_inertia_rotation: ["B", 4], position: ["T", "W", "B", 3],
     rotation: ["T", "W", "B", 4], constraint_body: ["C", 2], constraint_anchor: ["C", 2, 3],
     health: ["T", "W"],
+  };
+  // The bodies' collision shapes: all four arrays or none (files written
+  // before shapes were recorded); without them no body has a shape.
+  var SHAPE_ARRAYS = {
+    body_shape_type: ["B"], body_shape_size: ["B", 5], body_shape_position: ["B", 3],
+    body_shape_rotation: ["B", 4],
   };
   var MOTION_STATIC = 0;  // include/manyworlds/motion_type.h
 
@@ -27,13 +34,21 @@ var ManyworldsRecording = (function () {
       T: arrays.time.shape[0], W: arrays.world.shape[0], B: arrays.body_name.shape[0],
       C: arrays.constraint_body.shape[0],
     };
-    Object.keys(NEEDED).forEach(function (name) {
-      var expected = NEEDED[name].map(function (d) { return typeof d === "number" ? d : sizes[d]; });
+    var checkShape = function (name, dims) {
+      var expected = dims.map(function (d) { return typeof d === "number" ? d : sizes[d]; });
       if (JSON.stringify(arrays[name].shape) !== JSON.stringify(expected)) {
         throw new Error(name + ": shape " + JSON.stringify(arrays[name].shape) + ", expected " +
                         JSON.stringify(expected));
       }
-    });
+    };
+    Object.keys(NEEDED).forEach(function (name) { checkShape(name, NEEDED[name]); });
+    var shapeArrays = Object.keys(SHAPE_ARRAYS);
+    if (shapeArrays.some(function (name) { return arrays[name]; })) {
+      shapeArrays.forEach(function (name) {
+        if (!arrays[name]) throw new Error("the recording has body shapes but no array '" + name + "'");
+        checkShape(name, SHAPE_ARRAYS[name]);
+      });
+    }
     if (sizes.T === 0) throw new Error("the recording has no frame");
     return sizes;
   }
@@ -64,6 +79,26 @@ var ManyworldsRecording = (function () {
   Recording.prototype.inertiaRotation = function (body) {
     var q = this.arrays.body_inertia_rotation.data;
     return [q[4 * body], q[4 * body + 1], q[4 * body + 2], q[4 * body + 3]];
+  };
+  // Whether the file holds the bodies' collision shapes.
+  Recording.prototype.hasShapes = function () {
+    return Boolean(this.arrays.body_shape_type);
+  };
+  // The collision shape of `body`, null when it has none (or the file holds
+  // no shapes): {type (ShapeType: 1 sphere, 2 capsule, 3 box, 4 plane),
+  // size [radius, half_height, half_extents x, y, z], position [x, y, z] and
+  // rotation [x, y, z, w] in the body's centre-of-mass frame}.
+  Recording.prototype.shape = function (body) {
+    if (!this.hasShapes()) return null;
+    var type = this.arrays.body_shape_type.data[body];
+    if (type === 0) return null;
+    var s = this.arrays.body_shape_size.data, p = this.arrays.body_shape_position.data;
+    var q = this.arrays.body_shape_rotation.data;
+    return {
+      type: type, size: Array.prototype.slice.call(s, 5 * body, 5 * body + 5),
+      position: Array.prototype.slice.call(p, 3 * body, 3 * body + 3),
+      rotation: Array.prototype.slice.call(q, 4 * body, 4 * body + 4),
+    };
   };
   // Centre of mass and rotation (x, y, z, w) of `body` in recorded world
   // slot `w` (0 .. worlds-1) at frame `t`.

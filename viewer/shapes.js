@@ -1,5 +1,16 @@
-// What a body looks like, from its mass properties alone (a recording holds
-// no shapes): the solid of uniform density whose principal moments match.
+// What a body looks like. A body with a collision shape in the recording
+// (body_shape_*, docs/recording.md) is drawn as that shape, in the shape's
+// frame (placed in the body frame by the view):
+//   sphere (1)  -> a sphere of its radius
+//   capsule (2) -> a cylinder of length 2 half_height and two hemispheres,
+//                  along the shape's Y
+//   box (3)     -> a box of twice its half extents
+//   plane (4)   -> a flat square (PLANE_SIZE m, or more to span worlds laid
+//                  side by side) in the shape's XZ plane, normal (+Y) up: a
+//                  grid and a faint, see-through quad that hides nothing
+// A body without a shape (and every body of an older recording, which holds
+// no shapes) is guessed from its mass properties alone: the solid of uniform
+// density whose principal moments match, in the principal frame.
 //   three equal moments          -> a sphere (I = 2/5 m r^2)
 //   two equal, the third larger  -> a disc, a short cylinder (I_axis = m r^2 / 2)
 //   two equal, the third smaller -> a capsule along the odd axis (a rod)
@@ -9,6 +20,10 @@
 
 var ManyworldsShapes = (function () {
   var SAME = 0.03;  // moments within 3 % count as equal
+  // ShapeType (include/manyworlds/scene.h) as recorded in body_shape_type.
+  var SPHERE = 1, CAPSULE = 2, BOX = 3, PLANE = 4;
+  var PLANE_SIZE = 20;  // m, the side of a plane's square
+  var PLANE_GRID_COLOR = 0x66707b, PLANE_GRID_CENTRE_COLOR = 0x8a939e;
 
   function near(a, b) {
     return Math.abs(a - b) <= SAME * Math.max(a, b);
@@ -42,21 +57,86 @@ var ManyworldsShapes = (function () {
     return { kind: "box", size: size.map(function (s) { return Math.max(s, 0.02 * largest); }) };
   }
 
+  // The drawn shape of a recorded collision shape (Recording.shape: type,
+  // size [radius, half_height, half_extents]), in the shape's frame, with
+  // `collision: true`; null for a type this viewer does not know (drawn from
+  // the mass properties then).
+  function fromCollision(shape) {
+    var s = shape.size;
+    if (shape.type === SPHERE) return { kind: "sphere", radius: s[0], collision: true };
+    if (shape.type === CAPSULE) {
+      return { kind: "capsule", axis: 1, radius: s[0], length: 2 * (s[1] + s[0]), collision: true };
+    }
+    if (shape.type === BOX) return { kind: "box", size: [2 * s[2], 2 * s[3], 2 * s[4]], collision: true };
+    if (shape.type === PLANE) return { kind: "plane", size: PLANE_SIZE, collision: true };
+    return null;
+  }
+
   // A radius that bounds the shape, for framing the camera and spacing worlds.
+  // A plane is unbounded: 0, only its centre is framed.
   function boundingRadius(shape) {
+    if (shape.kind === "plane") return 0;
     if (shape.kind === "sphere") return shape.radius;
     if (shape.kind === "disc" || shape.kind === "capsule") return Math.hypot(shape.radius, shape.length / 2);
     return 0.5 * Math.hypot(shape.size[0], shape.size[1], shape.size[2]);
   }
 
-  // A THREE.Object3D of the shape in the principal frame. Cylinders are
-  // along three's Y; `axis` turns them onto X or Z.
-  function makeMesh(THREE, shape, material) {
+  // A grid of `cells` x `cells` in the XZ plane, side `size`, the two centre
+  // lines brighter. Unlike three's GridHelper every line is cut into one
+  // segment per cell: a line that runs behind the camera is then dropped
+  // segment by segment (SwiftShader, at least, drops such a line whole).
+  function makeGrid(THREE, size, cells) {
+    var positions = [], colors = [], half = size / 2, step = size / cells;
+    var centre = new THREE.Color(PLANE_GRID_CENTRE_COLOR), line = new THREE.Color(PLANE_GRID_COLOR);
+    for (var k = 0; k <= cells; k++) {
+      var across = -half + k * step, color = 2 * k === cells ? centre : line;
+      for (var j = 0; j < cells; j++) {
+        var from = -half + j * step, to = from + step;
+        positions.push(from, 0, across, to, 0, across, across, 0, from, across, 0, to);
+        for (var v = 0; v < 4; v++) colors.push(color.r, color.g, color.b);
+      }
+    }
+    var geometry = new THREE.BufferGeometry();
+    geometry.setAttribute("position", new THREE.Float32BufferAttribute(positions, 3));
+    geometry.setAttribute("color", new THREE.Float32BufferAttribute(colors, 3));
+    // r111 takes the constant THREE.VertexColors, later releases `true`.
+    var material = new THREE.LineBasicMaterial({
+      vertexColors: THREE.VertexColors !== undefined ? THREE.VertexColors : true,
+    });
+    return new THREE.LineSegments(geometry, material);
+  }
+
+  // A plane's square of side `size` in the XZ plane: a grid of 1 m cells
+  // (2 m past 40 m) over a quad of `color`, see-through and not writing depth,
+  // so that it hides nothing below it and does not fight the grid.
+  function makePlane(THREE, size, color) {
     var group = new THREE.Group();
-    var mesh;
+    group.add(makeGrid(THREE, size, Math.round(size <= 40 ? size : size / 2)));
+    var quad = new THREE.Mesh(
+      new THREE.PlaneBufferGeometry(size, size),
+      new THREE.MeshBasicMaterial({
+        color: color, transparent: true, opacity: 0.22, depthWrite: false, side: THREE.DoubleSide,
+      }));
+    quad.rotation.x = -Math.PI / 2;  // three's plane is XY with normal +Z: onto XZ, normal +Y
+    group.add(quad);
+    return group;
+  }
+
+  // A THREE.Object3D of the shape in its frame (the principal frame for a
+  // shape from the mass properties). Cylinders are along three's Y; `axis`
+  // turns them onto X or Z. `userData.manyworldsShape` names the kind
+  // (the view counts what it draws for tests).
+  function makeMesh(THREE, shape, material) {
+    var group = makeShapeMesh(THREE, shape, material);
+    group.userData.manyworldsShape = shape.kind;
+    return group;
+  }
+
+  function makeShapeMesh(THREE, shape, material) {
+    var group = new THREE.Group();
+    if (shape.kind === "plane") return makePlane(THREE, shape.size, material.color);
     if (shape.kind === "sphere") {
-      mesh = new THREE.Mesh(new THREE.SphereBufferGeometry(shape.radius, 24, 16), material);
-      group.add(mesh);
+      group.add(new THREE.Mesh(new THREE.SphereBufferGeometry(shape.radius, 24, 16), material));
       return group;
     }
     if (shape.kind === "box" || shape.kind === "marker") {
@@ -69,13 +149,15 @@ var ManyworldsShapes = (function () {
       along.add(new THREE.Mesh(
         new THREE.CylinderBufferGeometry(shape.radius, shape.radius, shape.length, 32), material));
     } else {
-      // Capsule (three r111 has no CapsuleGeometry): a cylinder and two
-      // spheres, overall length `length`.
+      // Capsule (three r111 has no CapsuleGeometry): an open cylinder and
+      // two hemispheres, overall length `length`.
       var middle = Math.max(shape.length - 2 * shape.radius, 0);
       along.add(new THREE.Mesh(
-        new THREE.CylinderBufferGeometry(shape.radius, shape.radius, middle, 20), material));
+        new THREE.CylinderBufferGeometry(shape.radius, shape.radius, middle, 20, 1, true), material));
       [-1, 1].forEach(function (side) {
-        var cap = new THREE.Mesh(new THREE.SphereBufferGeometry(shape.radius, 20, 12), material);
+        // Polar angle from +Y: the top half [0, pi/2], the bottom [pi/2, pi].
+        var cap = new THREE.Mesh(new THREE.SphereBufferGeometry(
+          shape.radius, 20, 6, 0, 2 * Math.PI, side > 0 ? 0 : Math.PI / 2, Math.PI / 2), material);
         cap.position.y = side * middle / 2;
         along.add(cap);
       });
@@ -86,5 +168,8 @@ var ManyworldsShapes = (function () {
     return group;
   }
 
-  return { fromMass: fromMass, boundingRadius: boundingRadius, makeMesh: makeMesh };
+  return {
+    fromMass: fromMass, fromCollision: fromCollision, boundingRadius: boundingRadius,
+    makeMesh: makeMesh, PLANE_SIZE: PLANE_SIZE,
+  };
 })();

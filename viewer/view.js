@@ -1,8 +1,10 @@
 // The 3D view of a recording (three.js r111, Debian's libjs-three): one mesh
-// per body and world, joints as lines from each body's centre of mass to the
-// anchor, worlds side by side (offset along X) or overlaid (tinted per
-// world), a ground grid under the lowest body, and a camera that frames
-// the whole recording and then stays put, so motion shows as motion.
+// per body and world (its collision shape where it has one, else a look
+// from its mass properties: viewer/shapes.js), joints as lines from each
+// body's centre of mass to the anchor, worlds side by side (offset along X)
+// or overlaid (tinted per world), a ground grid under the lowest body unless
+// a plane shape faces up, and a camera that frames the whole recording and
+// then stays put, so motion shows as motion.
 "use strict";
 
 var ManyworldsView = (function () {
@@ -51,12 +53,25 @@ var ManyworldsView = (function () {
     sun.position.set(0.4, 1, 0.7);
     this.scene.add(sun);
 
-    var shapes = [], radius = [];
+    // Each body's look and where it sits in the body frame: the collision
+    // shape at its position and rotation, else the mass-based look turned
+    // onto the principal axes.
+    var shapes = [], places = [], radius = [];
     for (var b = 0; b < recording.bodies; b++) {
-      shapes.push(ManyworldsShapes.fromMass(recording.mass(b), recording.inertiaDiagonal(b),
-                                            recording.isStatic(b)));
-      radius.push(ManyworldsShapes.boundingRadius(shapes[b]));
+      var collision = recording.shape(b);
+      var drawn = collision ? ManyworldsShapes.fromCollision(collision) : null;
+      if (drawn) {
+        shapes.push(drawn);
+        places.push({ position: collision.position, rotation: collision.rotation });
+      } else {
+        shapes.push(ManyworldsShapes.fromMass(recording.mass(b), recording.inertiaDiagonal(b),
+                                              recording.isStatic(b)));
+        places.push({ position: [0, 0, 0], rotation: recording.inertiaRotation(b) });
+      }
+      var at = places[b].position;
+      radius.push(ManyworldsShapes.boundingRadius(shapes[b]) + Math.hypot(at[0], at[1], at[2]));
     }
+    this.shapes = shapes;
     // Where one world's bodies go over the whole recording (about 100
     // frames sampled): the spacing of side-by-side worlds and the camera's
     // frame, so nothing leaves the view while it plays.
@@ -78,10 +93,16 @@ var ManyworldsView = (function () {
     var spacing = 1.25 * (high[0] - low[0]) + 0.2;
     this.offsets = slots.map(function (w, i) { return overlay ? 0 : (i - (slots.length - 1) / 2) * spacing; });
 
+    // A plane spans the worlds laid side by side, with PLANE_SIZE / 2 of
+    // ground past the outer ones (whole metres, so that grid cells are 1 m).
+    var span = overlay ? 0 : spacing * (slots.length - 1);
+    var planeSize = 2 * Math.ceil((ManyworldsShapes.PLANE_SIZE + span) / 2);
+
     this.meshes = [];
+    this.shapeMeshes = [];
     this.colors = [];
     for (var i = 0; i < slots.length; i++) {
-      var row = [], colorRow = [];
+      var row = [], colorRow = [], shapeRow = [];
       for (var body = 0; body < recording.bodies; body++) {
         var color = recording.isStatic(body) ? new THREE.Color(STATIC_COLOR)
                                              : bodyColor(THREE, body, i, layout === "overlay");
@@ -89,17 +110,22 @@ var ManyworldsView = (function () {
           color: color, transparent: overlay && slots.length > 1, opacity: overlay && slots.length > 1 ? 0.7 : 1,
         });
         var mesh = new THREE.Group();
-        var principal = ManyworldsShapes.makeMesh(THREE, shapes[body], material);
-        var q = recording.inertiaRotation(body);
-        principal.quaternion.set(q[0], q[1], q[2], q[3]);
-        mesh.add(principal);
+        var shape = shapes[body].kind === "plane" ? { kind: "plane", size: planeSize } : shapes[body];
+        var placed = ManyworldsShapes.makeMesh(THREE, shape, material);
+        var p = places[body].position, q = places[body].rotation;
+        placed.position.set(p[0], p[1], p[2]);
+        placed.quaternion.set(q[0], q[1], q[2], q[3]);
+        mesh.add(placed);
         this.scene.add(mesh);
         row.push(mesh);
+        shapeRow.push(placed);
         colorRow.push("#" + color.getHexString());
       }
       this.meshes.push(row);
+      this.shapeMeshes.push(shapeRow);
       this.colors.push(colorRow);
     }
+    var groundPlane = this.mergePlanes(shapes);
 
     var segments = recording.constraints * slots.length * 2;
     this.jointPositions = new Float32Array(segments * 2 * 3);
@@ -108,11 +134,43 @@ var ManyworldsView = (function () {
     this.joints = new THREE.LineSegments(geometry, new THREE.LineBasicMaterial({ color: JOINT_COLOR }));
     this.scene.add(this.joints);
 
-    var grid = new THREE.GridHelper(Math.max(4, 2 * (high[0] - low[0] + spacing * slots.length)), 20,
-                                    0x4a525c, 0x323840);
-    grid.position.y = low[1];
-    this.scene.add(grid);
+    if (!groundPlane) {
+      var grid = new THREE.GridHelper(Math.max(4, 2 * (high[0] - low[0] + spacing * slots.length)), 20,
+                                      0x4a525c, 0x323840);
+      grid.position.y = low[1];
+      this.scene.add(grid);
+    }
     this.frameCamera(low, high, spacing * (overlay ? 0 : slots.length - 1));
+  };
+
+  // Worlds side by side along X share a ground plane: one plane is drawn
+  // for each distinct plane (normal and offset, at frame 0: planes are on
+  // static bodies), the shown world's nearest the middle; the others are
+  // hidden, so that overlapping see-through squares do not add up. Returns
+  // whether a drawn plane faces up (the grid under the lowest body is then
+  // left out).
+  View.prototype.mergePlanes = function (shapes) {
+    var THREE = this.THREE, r = this.recording, self = this, drawn = [];
+    var order = this.slots.map(function (w, i) { return i; });
+    order.sort(function (a, b) { return Math.abs(self.offsets[a]) - Math.abs(self.offsets[b]); });
+    order.forEach(function (i) {
+      for (var b = 0; b < r.bodies; b++) {
+        if (shapes[b].kind !== "plane") continue;
+        var placed = self.shapeMeshes[i][b];
+        var p = r.position(0, self.slots[i], b), q = r.rotation(0, self.slots[i], b);
+        var body = new THREE.Quaternion(q[0], q[1], q[2], q[3]);
+        var normal = new THREE.Vector3(0, 1, 0).applyQuaternion(placed.quaternion).applyQuaternion(body);
+        var point = placed.position.clone().applyQuaternion(body).add(
+          new THREE.Vector3(p[0] + self.offsets[i], p[1], p[2]));
+        var offset = normal.dot(point);
+        var same = drawn.some(function (d) {
+          return d.normal.distanceTo(normal) < 1e-4 && Math.abs(d.offset - offset) < 1e-4;
+        });
+        if (same) placed.visible = false;
+        else drawn.push({ normal: normal, offset: offset });
+      }
+    });
+    return drawn.some(function (d) { return d.normal.y > 0.9; });
   };
 
   View.prototype.frameCamera = function (low, high, extraWidth) {
@@ -170,7 +228,8 @@ var ManyworldsView = (function () {
   };
 
   // Where each body's centre of mass is drawn, in CSS pixels of the page,
-  // with its colour: published for tests (tests/viewer_screenshot_test.py).
+  // with its colour, its collision shape ("none" without one) and what is
+  // drawn for it: published for tests (tests/viewer_screenshot_test.py).
   View.prototype.projectedBodies = function () {
     var rect = this.renderer.domElement.getBoundingClientRect(), THREE = this.THREE, self = this;
     var result = [];
@@ -180,11 +239,24 @@ var ManyworldsView = (function () {
         result.push({
           world: self.recording.worldIndex[w], body: b, name: self.recording.bodyName[b],
           static: self.recording.isStatic(b), color: self.colors[i][b],
+          shape: self.shapes[b].collision ? self.shapes[b].kind : "none", look: self.shapes[b].kind,
           x: rect.left + (p.x + 1) / 2 * rect.width, y: rect.top + (1 - p.y) / 2 * rect.height,
         });
       }
     });
     return result;
+  };
+
+  // How many of each kind of shape the scene graph shows ({box: 10, plane:
+  // 1, ...}: planes merged across worlds count once), for tests.
+  View.prototype.drawnShapes = function () {
+    var counts = {};
+    if (!this.scene) return counts;
+    this.scene.traverseVisible(function (object) {
+      var kind = object.userData.manyworldsShape;
+      if (kind) counts[kind] = (counts[kind] || 0) + 1;
+    });
+    return counts;
   };
 
   return { View: View, BACKGROUND: BACKGROUND };

@@ -1,6 +1,8 @@
 // Recording: chosen worlds' body poses, joint coordinates and health, one
 // frame per Capture, streamed into an NPZ file that numpy.load reads without
-// manyworlds (docs/recording.md has the arrays; viewer/ plays it in 3D).
+// manyworlds, after the scene's description (bodies with their mass
+// properties and collision shapes, constraints; docs/recording.md has the
+// arrays; viewer/ plays it in 3D).
 //
 //   Batch batch(scene, 4096);
 //   Recorder recorder(batch, "run.npz", {0, 1, 7}, {.scene = "ragdoll"});

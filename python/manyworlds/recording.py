@@ -11,6 +11,11 @@ disk); ``load_recording`` reads and checks it::
             rec.capture(batch, time=step * settings.delta_time, step=step)
     recording = mw.load_recording("run.npz")
     recording.position.shape                         # (601, 3, bodies, 3)
+    recording.body_shape_type                        # per body: 0 none, 1 sphere, ... 4 plane
+
+Files written before the bodies' collision shapes were recorded (same
+format version 1, no ``body_shape_*`` arrays) load too: their bodies have
+no shape (``recording.has_shapes`` is False).
 """
 
 import os as _os
@@ -45,6 +50,24 @@ _ARRAYS = {
     "joint_coordinate_constraint": ("<i4", ("J",)),
     "joint_coordinates": ("<f4", ("T", "W", "J")),
     "health": ("|u1", ("T", "W")),
+}
+# Arrays of format 1 that older files lack: the bodies' collision shapes
+# (ShapeType, then radius, half_height, half_extents; the shape's place in the
+# body frame). All or none of them; without them every body has no shape, the
+# values below.
+_SHAPE_ARRAYS = {
+    "body_shape_type": ("|u1", ("B",)),
+    "body_shape_size": ("<f4", ("B", 5)),
+    "body_shape_position": ("<f4", ("B", 3)),
+    "body_shape_rotation": ("<f4", ("B", 4)),
+}
+_ARRAYS.update(_SHAPE_ARRAYS)
+_SHAPE_DEFAULTS = {
+    "body_shape_type": lambda bodies: _np.zeros(bodies, _np.uint8),
+    "body_shape_size": lambda bodies: _np.zeros((bodies, 5), _np.float32),
+    "body_shape_position": lambda bodies: _np.zeros((bodies, 3), _np.float32),
+    "body_shape_rotation": lambda bodies: _np.tile(_np.array([0, 0, 0, 1], _np.float32),
+                                                   (bodies, 1)),
 }
 # Which array fixes each letter.
 _SIZES_FROM = {"T": "time", "W": "world", "B": "body_name", "C": "constraint_name",
@@ -81,19 +104,30 @@ class Recorder(_core.Recorder):
 
 class Recording:
     """A loaded recording: every array of the file as an attribute
-    (``recording.position``), ``scene`` as a str, and the sizes."""
+    (``recording.position``), ``scene`` as a str, and the sizes.
+
+    ``arrays`` holds the file's arrays as they are; the ``body_shape_*``
+    attributes (and ``recording["body_shape_type"]``) exist for a file
+    without them too, every body without a shape; ``has_shapes`` says
+    whether the file held them."""
 
     def __init__(self, arrays):
         self.arrays = arrays
         for name, value in arrays.items():
             setattr(self, name, value)
         self.scene = str(arrays["scene"][()])
+        self.has_shapes = all(name in arrays for name in _SHAPE_ARRAYS)
+        if not self.has_shapes:
+            for name, default in _SHAPE_DEFAULTS.items():
+                setattr(self, name, default(len(arrays["body_name"])))
 
     num_frames = property(lambda self: len(self.time))
     num_worlds = property(lambda self: len(self.world))
     num_bodies = property(lambda self: len(self.body_name))
 
     def __getitem__(self, name):
+        if name in _SHAPE_ARRAYS and name not in self.arrays:
+            return getattr(self, name)
         return self.arrays[name]
 
     def __repr__(self):
@@ -118,7 +152,10 @@ def load_recording(path):
     shapes; raises ValueError naming the first array that is wrong."""
     with _np.load(_os.fspath(path), allow_pickle=False) as npz:
         arrays = {name: npz[name] for name in npz.files}
-    missing = [name for name in _ARRAYS if name not in arrays]
+    missing = [name for name in _ARRAYS if name not in arrays and name not in _SHAPE_ARRAYS]
+    shapes = [name for name in _SHAPE_ARRAYS if name in arrays]
+    if shapes:  # a file with shapes has all their arrays
+        missing += [name for name in _SHAPE_ARRAYS if name not in arrays]
     if missing:
         raise ValueError(f"{_os.fspath(path)!r} is not a manyworlds recording: missing {missing}")
     version = arrays["format_version"]

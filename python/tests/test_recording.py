@@ -1,6 +1,7 @@
 """Recorder and load_recording (docs/recording.md): the file numpy.load reads
-directly holds what get_state and get_joint_coordinates said, frame by frame;
-errors leave no file behind."""
+directly holds what get_state and get_joint_coordinates said, frame by frame,
+and the bodies' collision shapes; a file without the shapes (older) still
+loads; errors leave no file behind."""
 
 import os
 
@@ -45,6 +46,8 @@ def test_numpy_reads_the_frames_bit_for_bit(tmp_path):
         assert data["body_name"].tolist()[:3] == ["pelvis", "chest", "head"]
         assert data["constraint_type"][0] == "swing_twist"
         assert data["joint_coordinate_name"].shape == (batch.joint_coordinates_per_world,)
+        # The ragdoll's bodies have no collision shape.
+        assert data["body_shape_type"].tolist() == [0] * 11
 
 
 def test_load_recording_checks_and_names_arrays(tmp_path):
@@ -77,6 +80,106 @@ def test_what_numpy_savez_writes_loads_too(tmp_path):
         np.savez(tmp_path / "copy.npz", **{name: data[name] for name in data.files})
     again = mw.load_recording(tmp_path / "copy.npz")
     assert np.array_equal(again.position, mw.load_recording(path).position)
+
+
+def shapes_scene():
+    """A body of every ShapeType (in enum order, none last), with values in
+    the fields a type does not use: those are recorded as 0."""
+    scene = mw.Scene()
+    scene.add_body(mw.BodySettings(
+        name="ground", motion_type=mw.MotionType.STATIC, position=(0, -0.5, 0),
+        shape=mw.ShapeSettings(type=mw.ShapeType.PLANE, position=(0, 0.25, 0),
+                               rotation=(0.0998334, 0, 0, 0.9950042), radius=3.0)))
+    scene.add_body(mw.BodySettings(
+        name="ball", position=(0, 1, 0),
+        shape=mw.ShapeSettings(type=mw.ShapeType.SPHERE, radius=0.25, half_height=4.0)))
+    scene.add_body(mw.BodySettings(
+        name="rod", position=(1, 1, 0),
+        shape=mw.ShapeSettings(type=mw.ShapeType.CAPSULE, radius=0.1, half_height=0.4,
+                               position=(0.1, 0.2, -0.3), rotation=(0, 0, 0.7071068, 0.7071068))))
+    scene.add_body(mw.BodySettings(
+        name="crate", position=(-1, 1, 0),
+        shape=mw.ShapeSettings(type=mw.ShapeType.BOX, half_extents=(0.3, 0.2, 0.1),
+                               rotation=(0, 0.3826834, 0, 0.9238795))))
+    scene.add_body(mw.BodySettings(
+        name="ghost", position=(0, 3, 0),
+        shape=mw.ShapeSettings(radius=0.7, position=(1, 2, 3), rotation=(0, 1, 0, 0))))
+    return scene
+
+
+def test_shapes_are_recorded(tmp_path):
+    scene = shapes_scene()
+    batch = mw.Batch(scene, 2)
+    path = tmp_path / "shapes.npz"
+    with mw.Recorder(batch, path, [1], scene="shapes") as recorder:
+        recorder.capture(batch, 0.0, 0)
+    f32 = lambda values: np.array(values, np.float32)  # noqa: E731
+    with np.load(path, allow_pickle=False) as data:
+        assert data["body_shape_type"].dtype == np.uint8
+        assert data["body_shape_type"].tolist() == [4, 1, 2, 3, 0]
+        size = data["body_shape_size"]
+        assert size.dtype == np.float32 and size.shape == (5, 5)
+        # Bit for bit the settings' floats (float32 in the bindings too).
+        assert np.array_equal(size.view(np.uint32), f32([
+            [0, 0, 0, 0, 0], [0.25, 0, 0, 0, 0], [0.1, 0.4, 0, 0, 0], [0, 0, 0.3, 0.2, 0.1],
+            [0, 0, 0, 0, 0]]).view(np.uint32))
+        assert np.array_equal(data["body_shape_position"].view(np.uint32), f32([
+            [0, 0.25, 0], [0, 0, 0], [0.1, 0.2, -0.3], [0, 0, 0], [0, 0, 0]]).view(np.uint32))
+        assert np.array_equal(data["body_shape_rotation"].view(np.uint32), f32([
+            [0.0998334, 0, 0, 0.9950042], [0, 0, 0, 1], [0, 0, 0.7071068, 0.7071068],
+            [0, 0.3826834, 0, 0.9238795], [0, 0, 0, 1]]).view(np.uint32))
+    recording = mw.load_recording(path)
+    assert recording.has_shapes
+    assert recording.body_shape_type.tolist() == [4, 1, 2, 3, 0]
+    assert recording["body_shape_size"].shape == (5, 5)
+    for b, body in enumerate(scene.bodies):
+        assert recording.body_shape_type[b] == int(body.shape.type)
+
+
+def test_a_contact_scene_records_its_shapes(tmp_path):
+    batch = mw.Batch(mw.make_scene("box-stack"), 1)
+    with mw.Recorder(batch, tmp_path / "stack.npz", [0], scene="box-stack") as recorder:
+        recorder.capture(batch, 0.0, 0)
+    recording = mw.load_recording(tmp_path / "stack.npz")
+    assert recording.body_shape_type.tolist() == [int(mw.ShapeType.PLANE)] + \
+        [int(mw.ShapeType.BOX)] * 5
+    assert np.allclose(recording.body_shape_size[1:, 2:], [0.4, 0.25, 0.3])
+
+
+def test_a_file_without_shapes_loads(tmp_path):
+    # What the writer made before shapes were recorded: the same format 1
+    # without the body_shape_* arrays. Every body then has no shape.
+    path = tmp_path / "ragdoll.npz"
+    record_ragdoll(path)
+    with np.load(path) as data:
+        old = {name: data[name] for name in data.files if not name.startswith("body_shape_")}
+    np.savez(tmp_path / "old.npz", **old)
+    recording = mw.load_recording(tmp_path / "old.npz")
+    assert not recording.has_shapes
+    assert "body_shape_type" not in recording.arrays
+    bodies = recording.num_bodies
+    assert recording.body_shape_type.tolist() == [0] * bodies
+    assert recording["body_shape_type"].dtype == np.uint8
+    assert recording.body_shape_size.shape == (bodies, 5) and not recording.body_shape_size.any()
+    assert recording.body_shape_position.shape == (bodies, 3)
+    assert recording.body_shape_rotation.tolist() == [[0, 0, 0, 1]] * bodies
+    assert np.array_equal(recording.position, mw.load_recording(path).position)
+
+    # Some of the shape arrays but not all: refused, naming the missing ones.
+    np.savez(tmp_path / "part.npz", **old, body_shape_type=np.zeros(bodies, np.uint8))
+    with pytest.raises(ValueError, match="body_shape_size"):
+        mw.load_recording(tmp_path / "part.npz")
+    # A shape array of a wrong shape or dtype: refused like any other.
+    with np.load(path) as data:
+        arrays = {name: data[name] for name in data.files}
+    arrays["body_shape_size"] = np.zeros((bodies, 4), np.float32)
+    np.savez(tmp_path / "bad.npz", **arrays)
+    with pytest.raises(ValueError, match="body_shape_size"):
+        mw.load_recording(tmp_path / "bad.npz")
+    arrays["body_shape_size"] = np.zeros((bodies, 5), np.float64)
+    np.savez(tmp_path / "bad.npz", **arrays)
+    with pytest.raises(ValueError, match="body_shape_size"):
+        mw.load_recording(tmp_path / "bad.npz")
 
 
 def test_an_exception_leaves_no_file(tmp_path):
