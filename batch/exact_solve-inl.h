@@ -277,34 +277,43 @@ void NewtonStep(const StepPlan& plan, std::byte* block, ExactScratch& scratch, V
 // with the geometric stiffness `stiffness` * (pull) (Inertia). With
 // inequality rows (motors, friction, limits; batch/exact_inequality_rows-inl.h)
 // `iterations` passes of block Gauss-Seidel around the exact solve, which
-// factors K once and ends with the equality rows exact.
+// factors K once and ends with the equality rows exact. Contacts are
+// inequality rows too: `contacts` is a ContactPhases (step_kernels.cc) set
+// up before the joints' inequality rows, warm-started after them, and whose
+// velocity pass follows theirs in every pass (docs/contacts.md).
 // The point groups' impulses are kept as their parts' total_lambda (the
 // next substep's pulls).
 // `visit()` is called three times per group (the step's prefetch of the next
 // block, spread thin so that its requests never queue up).
-template <class Visit>
+template <class Visit, class Contacts>
 void ExactSolveVelocity(const StepPlan& plan, std::byte* block, ExactScratch& scratch,
                         float stiffness, const StepScalars& step, int iterations,
-                        Visit&& visit) {
+                        Visit&& visit, Contacts&& contacts) {
   const ExactSolvePlan& exact = plan.exact;
   exact::HingeTurns(plan, block);
   exact::LeverArms(plan, block);
   exact::GroupJacobians(plan, block, scratch);
   exact::Inertia(plan, block, scratch, stiffness);
   exact::AssembleK(plan, block, scratch);
+  // The contacts' rows from the velocities after the forces (their
+  // restitution reads them), as in the Gauss-Seidel step; their warm start
+  // after the joints'.
+  contacts.Setup();
   for (std::size_t i : exact.inequality) {
     exact::InequalitySetupAndWarmStart(ConstraintInBlock(plan, i, block), step);
   }
+  contacts.WarmStart();
   exact::VelocityRhs(plan, block, scratch, visit);
   exact::Factor(exact, scratch, visit);
   exact::Solve(exact, scratch);
   exact::ApplyVelocityImpulses(plan, block, scratch, false, visit);
-  if (exact.inequality.empty()) return;
+  if (exact.inequality.empty() && plan.contacts.empty()) return;
   const auto no_visit = [] {};
   for (int pass = 1; pass < iterations; ++pass) {
     for (std::size_t i : exact.inequality) {
       exact::InequalitySolveVelocity(ConstraintInBlock(plan, i, block));
     }
+    contacts.SolveVelocity();
     exact::VelocityRhs(plan, block, scratch, no_visit);
     exact::Solve(exact, scratch);
     exact::ApplyVelocityImpulses(plan, block, scratch, true, no_visit);
@@ -313,16 +322,18 @@ void ExactSolveVelocity(const StepPlan& plan, std::byte* block, ExactScratch& sc
 
 // Position phase: Newton steps until each world's groups are within
 // `tolerance`, at most `passes`, each followed by a Baumgarte step of every
-// hard limit. Returns the number of passes taken (by the slowest world of the
-// block).
-template <class Visit>
+// hard limit and then every contact (`contacts`, as for the velocity phase).
+// Returns the number of passes taken (by the slowest world of the block).
+template <class Visit, class Contacts>
 int ExactSolvePosition(const StepPlan& plan, std::byte* block, ExactScratch& scratch, int passes,
-                       float tolerance, const StepScalars& step, Visit&& visit) {
+                       float tolerance, const StepScalars& step, Visit&& visit,
+                       Contacts&& contacts) {
   const ExactSolvePlan& exact = plan.exact;
   const LaneVec tolerance_squared = Splat(tolerance * tolerance);
-  // Whether a hard limit moved a world in the last pass (unknown before the
-  // first: batch/exact_inequality_rows-inl.h).
-  bool limits_moved = exact.hard_limits;
+  // Whether a hard limit or a contact moved a world in the last pass
+  // (unknown before the first: batch/exact_inequality_rows-inl.h).
+  const bool limited = exact.hard_limits || !plan.contacts.empty();
+  bool limits_moved = limited;
   int pass = 0;
   for (; pass < passes; ++pass) {
     // The mass metric (no stiffness); K only once some world has to move.
@@ -356,10 +367,13 @@ int ExactSolvePosition(const StepPlan& plan, std::byte* block, ExactScratch& scr
     if (!any_moving && !limits_moved) break;
     if (any_moving) exact::NewtonStep(plan, block, scratch, visit);
     limits_moved = false;
-    if (!exact.hard_limits) continue;
-    for (std::size_t i : exact.inequality) {
-      limits_moved |= exact::LimitSolvePosition(ConstraintInBlock(plan, i, block), step);
+    if (!limited) continue;
+    if (exact.hard_limits) {
+      for (std::size_t i : exact.inequality) {
+        limits_moved |= exact::LimitSolvePosition(ConstraintInBlock(plan, i, block), step);
+      }
     }
+    limits_moved |= contacts.SolvePosition();
   }
   return pass;
 }

@@ -703,10 +703,6 @@ StepPlan CompilePlan(const Scene& scene) {
 
   plan.block_bytes = layout.bytes();
   plan.exact = PlanExactSolve(scene, plan);
-  if (!plan.contacts.empty() && plan.exact.available()) {
-    plan.exact.unavailable = "the scene has contacts (" + plan.contacts.front().label +
-                             "), which only the Gauss-Seidel solver solves";
-  }
   return plan;
 }
 

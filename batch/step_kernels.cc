@@ -172,6 +172,29 @@ class NextBlockPrefetch {
   std::size_t lines_per_visit_;
 };
 
+// The contacts' phases as the exact joint solve runs them around its own
+// (batch/exact_solve-inl.h): `each` visits the slots in solve order.
+template <class ForEachContact>
+struct ContactPhases {
+  ForEachContact& each;
+  const ContactStepScalars& scalars;
+  float warm_start_ratio;
+  void Setup() const {
+    each([&](const ContactBlock& c) { ContactSetup(c, scalars); });
+  }
+  void WarmStart() const {
+    each([&](const ContactBlock& c) { ContactWarmStart(c, warm_start_ratio); });
+  }
+  void SolveVelocity() const {
+    each([&](const ContactBlock& c) { (void)ContactSolveVelocity(c); });
+  }
+  bool SolvePosition() const {
+    bool moved = false;
+    each([&](const ContactBlock& c) { moved |= ContactSolvePosition(c, scalars); });
+    return moved;
+  }
+};
+
 template <class Clock>
 bool StepBlockWith(const StepPlan& plan, std::byte* block, const std::byte* next_block,
                    const StepParams& params, Clock& clock) {
@@ -239,7 +262,9 @@ bool StepBlockWith(const StepPlan& plan, std::byte* block, const std::byte* next
     if (exact) {
       ExactSolveVelocity(plan, block, scratch,
                          substep == 0 ? params.exact_first_stiffness : params.exact_stiffness,
-                         step, params.velocity_iterations, [&] { prefetch.Visit(); });
+                         step, params.velocity_iterations, [&] { prefetch.Visit(); },
+                         ContactPhases<decltype(for_each_contact)>{for_each_contact,
+                                                                   contact_scalars, ratio});
       clock.Lap(StepPhase::kVelocity);
     } else if (solved_count != 0) {
       for_each_constraint([&](const ConstraintBlock& c) { SetupConstraint(c, step); });
@@ -271,7 +296,9 @@ bool StepBlockWith(const StepPlan& plan, std::byte* block, const std::byte* next
 
     if (exact) {
       ExactSolvePosition(plan, block, scratch, params.position_iterations,
-                         params.exact_tolerance, step, [&] { prefetch.Visit(); });
+                         params.exact_tolerance, step, [&] { prefetch.Visit(); },
+                         ContactPhases<decltype(for_each_contact)>{for_each_contact,
+                                                                   contact_scalars, ratio});
       clock.Lap(StepPhase::kPosition);
     } else if (solved_count != 0) {
       for (int iteration = 0; iteration < params.position_iterations; ++iteration) {

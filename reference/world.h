@@ -105,7 +105,7 @@ class World {
 
   // One step of settings.delta_time (see the header comment). Throws
   // std::invalid_argument for bad settings (contact settings negative or not
-  // finite included) and for JointSolver::kExact with contact slots.
+  // finite included).
   void Step(const StepSettings& settings) {
     if (!(settings.delta_time > 0.0f) || settings.substeps < 1 ||
         settings.velocity_iterations < 0 || settings.position_iterations < 0) {
@@ -117,10 +117,6 @@ class World {
       if (!(std::isfinite(value) && value >= 0.0f)) {
         throw std::invalid_argument("reference::World::Step: invalid contact settings");
       }
-    }
-    if (settings.solver == JointSolver::kExact && !contacts_.empty()) {
-      throw std::invalid_argument(
-          "reference::World::Step: the exact solve does not take a scene with contacts");
     }
     const T step_dt = T(settings.delta_time) / T(settings.substeps);
     const T first_ratio = settings.warm_start && previous_step_dt_ > T(0)
@@ -519,6 +515,42 @@ class World {
   void StepOnce(const StepSettings& settings, T dt, T warm_start_ratio, T stiffness_ratio) {
     ApplyForcesAndDamping(dt, ToVec3<T>(settings.gravity), settings.gyroscopic);
 
+    // Contacts come after every joint in each phase (docs/contacts.md); every
+    // slot has a dynamic body (MakeContacts), so all are solved.
+    const ContactSettings<T> contact_settings{
+        T(settings.speculative_contact_distance), T(settings.penetration_slop),
+        T(settings.max_penetration_distance), T(settings.min_velocity_for_restitution),
+        settings.speculative_contacts_from_velocity};
+    const Vec3<T> gravity = ToVec3<T>(settings.gravity);
+    const auto setup_contacts = [&] {
+      for (ContactConstraint<T>& contact : contacts_) {
+        contact.Setup(bodies_[contact.body1()], motion_[contact.body1()],
+                      bodies_[contact.body2()], motion_[contact.body2()], dt, gravity,
+                      contact_settings);
+      }
+    };
+    const auto warm_start_contacts = [&] {
+      for (ContactConstraint<T>& contact : contacts_) {
+        contact.WarmStart(bodies_[contact.body1()], bodies_[contact.body2()], warm_start_ratio);
+      }
+    };
+    const auto solve_contact_velocities = [&] {
+      bool applied = false;
+      for (ContactConstraint<T>& contact : contacts_) {
+        applied |= contact.SolveVelocity(bodies_[contact.body1()], bodies_[contact.body2()]);
+      }
+      return applied;
+    };
+    const auto solve_contact_positions = [&] {
+      bool moved = false;
+      for (ContactConstraint<T>& contact : contacts_) {
+        moved |= contact.SolvePosition(bodies_[contact.body1()], bodies_[contact.body2()],
+                                       T(settings.baumgarte), contact_settings.penetration_slop,
+                                       contact_settings.max_penetration_distance);
+      }
+      return moved;
+    };
+
     if (settings.solver == JointSolver::kExact && !constraints_.empty()) {
       ExactJointSolve<T> exact =
           ExactSolve(T(settings.exact_geometric_stiffness) * dt * stiffness_ratio);
@@ -563,17 +595,23 @@ class World {
         }
         return any;
       };
+      // Contacts are inequality rows too: set up from the velocities after
+      // the forces, warm-started after the joints' rows, solved after them
+      // in every pass and after their Baumgarte step in every Newton pass.
+      setup_contacts();
       for_each_bounded([&](auto& c, Body<T>& body1, Body<T>& body2) {
         c.SetupInequalityRows(body1, body2, dt);
         c.WarmStartInequalityRows(body1, body2, warm_start_ratio);
         return false;
       });
+      warm_start_contacts();
       exact.SolveVelocity();
-      if (!bounded.empty()) {
+      if (!bounded.empty() || !contacts_.empty()) {
         for (int pass = 1; pass < settings.velocity_iterations; ++pass) {
           for_each_bounded([&](auto& c, Body<T>& body1, Body<T>& body2) {
             return c.SolveInequalityVelocity(body1, body2, dt);
           });
+          solve_contact_velocities();
           exact.SolveVelocity(true);
         }
       }
@@ -581,11 +619,13 @@ class World {
       exact.SolvePosition(
           settings.position_iterations, T(settings.exact_tolerance),
           [&] {
-            return for_each_bounded([&](auto& c, Body<T>& body1, Body<T>& body2) {
+            bool moved = for_each_bounded([&](auto& c, Body<T>& body1, Body<T>& body2) {
               return c.SolveLimitPosition(body1, body2, dt, T(settings.baumgarte));
             });
+            moved |= solve_contact_positions();
+            return moved;
           },
-          !bounded.empty());
+          !bounded.empty() || !contacts_.empty());
       return;
     }
 
@@ -600,35 +640,20 @@ class World {
       }
     };
 
-    // Contacts come after every joint in each phase (docs/contacts.md); every
-    // slot has a dynamic body (MakeContacts), so all are solved.
-    const ContactSettings<T> contact_settings{
-        T(settings.speculative_contact_distance), T(settings.penetration_slop),
-        T(settings.max_penetration_distance), T(settings.min_velocity_for_restitution),
-        settings.speculative_contacts_from_velocity};
-    const Vec3<T> gravity = ToVec3<T>(settings.gravity);
-
     for_each_solved([&](auto& c, Body<T>& body1, Body<T>& body2) {
       c.SetupVelocityConstraint(body1, body2, dt);
     });
-    for (ContactConstraint<T>& contact : contacts_) {
-      contact.Setup(bodies_[contact.body1()], motion_[contact.body1()], bodies_[contact.body2()],
-                    motion_[contact.body2()], dt, gravity, contact_settings);
-    }
+    setup_contacts();
     for_each_solved([&](auto& c, Body<T>& body1, Body<T>& body2) {
       c.WarmStartVelocityConstraint(body1, body2, warm_start_ratio);
     });
-    for (ContactConstraint<T>& contact : contacts_) {
-      contact.WarmStart(bodies_[contact.body1()], bodies_[contact.body2()], warm_start_ratio);
-    }
+    warm_start_contacts();
     for (int iteration = 0; iteration < settings.velocity_iterations; ++iteration) {
       bool applied = false;
       for_each_solved([&](auto& c, Body<T>& body1, Body<T>& body2) {
         applied |= c.SolveVelocityConstraint(body1, body2, dt);
       });
-      for (ContactConstraint<T>& contact : contacts_) {
-        applied |= contact.SolveVelocity(bodies_[contact.body1()], bodies_[contact.body2()]);
-      }
+      applied |= solve_contact_velocities();
       if (!applied) break;
     }
 
@@ -638,11 +663,7 @@ class World {
     for (int iteration = 0; iteration < settings.position_iterations; ++iteration) {
       bool moved = false;
       for (Constraint* constraint : solved) moved |= SolvePosition(*constraint, dt, baumgarte);
-      for (ContactConstraint<T>& contact : contacts_) {
-        moved |= contact.SolvePosition(bodies_[contact.body1()], bodies_[contact.body2()],
-                                       baumgarte, contact_settings.penetration_slop,
-                                       contact_settings.max_penetration_distance);
-      }
+      moved |= solve_contact_positions();
       if (!moved) break;
     }
   }

@@ -221,7 +221,6 @@ TEST(ContactRefusalTest, BadStepSettingsAreRefusedBeforeAnythingMoves) {
           [](StepSettings& s) { s.max_penetration_distance = INFINITY; });
   refusal("min_velocity_for_restitution",
           [](StepSettings& s) { s.min_velocity_for_restitution = -1.0f; });
-  refusal("solver", [](StepSettings& s) { s.solver = JointSolver::kExact; });
 }
 
 // GetContacts: a box resting on the ground carries m g on its 4 points; a box
