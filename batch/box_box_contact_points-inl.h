@@ -8,11 +8,11 @@
 //   The faces of A and B most along +n and -n, clipped in projection along n:
 //   24 candidates (B's corners inside A's face, A's corners inside B's face,
 //   the 16 crossings of their edges), each a pair (on A, on B) with
-//   separation delta along n. The manifold exists where s < D and a
-//   candidate is valid; candidates with delta < D + 1 mm are kept (none: the
-//   deepest valid one alone); more than four are pruned as Jolt prunes them
-//   (farthest from body 1's centre of mass weighted by depth squared, the
-//   farthest from it, then the extremes on either side of that line).
+//   separation delta along n. The manifold exists where s < D and a valid
+//   candidate has delta < D; candidates with delta < D + 1 mm are kept; more
+//   than four are pruned as Jolt prunes them (farthest from body 1's centre
+//   of mass weighted by |on B - on A|^2, the farthest from it, then the
+//   extremes on either side of that line).
 
 #if defined(MANYWORLDS_BATCH_BOX_BOX_CONTACT_POINTS_INL_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef MANYWORLDS_BATCH_BOX_BOX_CONTACT_POINTS_INL_H_
@@ -242,26 +242,21 @@ inline ContactCandidates BoxBoxCandidates(const ContactBlock& c,
     }
   }
 
-  // Which exist and are kept; the deepest valid one alone when none is.
+  // The manifold exists where a valid candidate is within D (a point of
+  // the two faces that close: the separating axis alone may be within D
+  // where the boxes are farther apart); it keeps those within D + 1 mm.
   const LaneVec keep_below = hn::Add(speculative, Splat(kContactManifoldTolerance));
-  LaneMask any_valid = NoLanes(), any_kept = NoLanes();
-  LaneVec deepest = Splat(3.402823466e38f), deepest_index = Splat(-1.0f);
+  LaneMask exists = NoLanes();
   LaneMask keep[kBoxBoxCandidates];
   for (int i = 0; i < kBoxBoxCandidates; ++i) {
     const BoxBoxCandidate& candidate = candidates[i];
-    any_valid = hn::Or(any_valid, candidate.valid);
+    exists = hn::Or(exists, hn::And(candidate.valid, hn::Lt(candidate.separation, speculative)));
     keep[i] = hn::And(candidate.valid, hn::Lt(candidate.separation, keep_below));
-    any_kept = hn::Or(any_kept, keep[i]);
-    const LaneMask deeper = hn::And(candidate.valid, hn::Lt(candidate.separation, deepest));
-    deepest = hn::IfThenElse(deeper, candidate.separation, deepest);
-    deepest_index = hn::IfThenElse(deeper, Splat(float(i)), deepest_index);
   }
-  const LaneMask exists = hn::And(any_valid, near);
-  const LaneMask alone = hn::AndNot(any_kept, exists);
+  exists = hn::And(exists, near);
   LaneVec count = Zero();
   for (int i = 0; i < kBoxBoxCandidates; ++i) {
-    keep[i] = hn::Or(hn::And(exists, keep[i]),
-                     hn::And(alone, hn::Eq(deepest_index, Splat(float(i)))));
+    keep[i] = hn::And(exists, keep[i]);
     count = hn::Add(count, hn::IfThenElseZero(keep[i], one));
   }
 

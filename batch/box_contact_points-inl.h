@@ -311,7 +311,10 @@ inline ContactCandidates CapsuleBoxCandidates(const ContactBlock& c,
   const AxisPick k = FirstLargest(hn::Abs(m.x), hn::Abs(m.y), hn::Abs(m.z));
   const LaneVec face = hn::Mul(SignOf(AlongK(k, m)), AlongK(k, half));
   const LaneVec m_k = AlongK(k, m);
-  const Vec3 across = Normalize(Sub(m, Scale(axis_unit, along)));
+  // (|alpha| < 1 leaves it non-zero but for rounding: then m, as the
+  // reference and the plane rule.)
+  const Vec3 across_axis = Sub(m, Scale(axis_unit, along));
+  const Vec3 across = DirectionOrPrevious(across_axis, hn::Sqrt(LengthSquared(across_axis)), m);
   const Vec3 start = NegMulAdd(across, radius, core.a);
   const Vec3 direction = axis;  // b' - a' = b - a
   const auto height = [&](const Vec3& p) { return hn::Div(hn::Sub(AlongK(k, p), face), m_k); };

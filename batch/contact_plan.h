@@ -26,7 +26,7 @@ enum class ContactPairKind : std::uint8_t {
   kBoxBox,
 };
 const char* ContactPairKindName(ContactPairKind kind);
-// A plane with a sphere, capsule or box (else two spheres or capsules).
+// A plane with a sphere, capsule or box (else two of sphere, capsule, box).
 inline bool IsPlanePair(ContactPairKind kind) {
   return kind == ContactPairKind::kPlaneSphere || kind == ContactPairKind::kPlaneCapsule ||
          kind == ContactPairKind::kPlaneBox;

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -123,7 +124,12 @@ RecordedShape Recorded(const ShapeSettings& shape) {
       break;
   }
   r.position = shape.position;
-  r.rotation = shape.rotation;
+  // Normalised, as the step uses it (a scene may give any non-zero length).
+  const double length = std::sqrt(double(shape.rotation[0]) * shape.rotation[0] +
+                                  double(shape.rotation[1]) * shape.rotation[1] +
+                                  double(shape.rotation[2]) * shape.rotation[2] +
+                                  double(shape.rotation[3]) * shape.rotation[3]);
+  for (int i = 0; i < 4; ++i) r.rotation[i] = float(shape.rotation[i] / length);
   return r;
 }
 

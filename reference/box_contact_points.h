@@ -30,10 +30,10 @@
 //   ±u/|u| with n·t ≥ 0; 2. A's face k = first largest |n_k|, σ = sign n_k,
 //   B's k' from (C_j·n), σ' = −sign; corners in polygon order; 3. 24
 //   candidates: B's corners onto A's face plane along n, A's onto B's, edge
-//   crossings (Cramer, |Δ| > 1e-6|e_A||e_B|, s, τ ∈ [0, 1]); closed insides;
-//   δ = (on B − on A)·n; 4. s < D and a valid candidate: those with δ < K,
-//   else the first least δ; 5. over four: Jolt's pruning about body 1's
-//   centre of mass, in the order P1, P3, P2, P4.
+//   crossings (Cramer, |Δ| > 1e-6|e_A||e_B|, s, τ ∈ [−1e-4, 1 + 1e-4]);
+//   insides closed and widened by 1e-4; δ = (on B − on A)·n; 4. s < D and a
+//   valid candidate with δ < D: those with δ < K; 5. over four: Jolt's
+//   pruning about body 1's centre of mass, in the order P1, P3, P2, P4.
 #pragma once
 
 #include <algorithm>
@@ -389,17 +389,18 @@ BoxPairPoints<T> BoxBoxPoints(const BoxFrame<T>& box_a, const BoxFrame<T>& box_b
     }
   }
 
-  // 4. Kept: the valid ones with δ < K, or else the first valid with least δ.
+  // 4. The manifold exists when a valid candidate has δ < D; kept: the
+  // valid ones with δ < K.
   const T keep = spec + T(0.001);
   std::array<int, 24> kept{};
-  int kept_count = 0, least = -1;
+  int kept_count = 0;
+  bool within = false;
   for (int i = 0; i < 24; ++i) {
     if (!cand[i].valid) continue;
     if (cand[i].delta < keep) kept[kept_count++] = i;
-    if (least < 0 || cand[i].delta < cand[least].delta) least = i;
+    within = within || cand[i].delta < spec;
   }
-  if (least < 0) return out;
-  if (kept_count == 0) kept[kept_count++] = least;
+  if (!within) return out;
   out.normal = normal;
   if (kept_count <= 4) {
     for (int i = 0; i < kept_count; ++i) out.Add(box_a, cand[kept[i]].on_a, cand[kept[i]].on_b);

@@ -227,9 +227,10 @@ TEST_P(BoxContactBehaviourTest, HeavyBoxOnALightBox) {
 // on the box rest on it within the slop, the last hangs down the side, and
 // the joints are closed: the Newton steps bring every joint within the 1e-5 m
 // tolerance and the contacts' Baumgarte step that ends the last pass moves
-// them by at most what it pushes a link out beyond the slop, so 1 mm bounds
-// the gap (measured 0.25 mm; Gauss-Seidel at 10 + 2 iterations leaves
-// 3.7 mm on this chain: printed, not asserted).
+// them again by part of what it pushes a link out beyond the slop: 1 mm is
+// an empirical bound, 4x the measured 0.25 mm, while Gauss-Seidel at 10 + 2
+// iterations leaves 3.7 mm on this chain (printed, not asserted). The chain
+// slides about 0.3 m towards the edge as the overhang swings, but stays on.
 double JointGap(const Stepper& world, std::size_t link) {
   const Vec3d end = world.Position(link) + world.Rotation(link) * Vec3d(0.0, 0.4, 0.0);
   const Vec3d start =
@@ -278,8 +279,10 @@ TEST_P(BoxContactBehaviourTest, ExactJointsAroundContacts) {
       EXPECT_AT_MOST("on_the_box", std::abs(world->Position(std::size_t(i)).y() - 1.1),
                      kSlop + 1e-3);
     }
-    // Held: the first link still lies on the box (x in [-4, 1] m).
-    EXPECT_GT(world->Position(1).x() - 0.4, -4.0);
+    // Held: the first 5 links still lie on the box (link 5 started with its
+    // right end at 0.0 m, the edge is at 1.0 m).
+    EXPECT_LT(world->Position(5).x() + 0.4, 1.0);
+    Report("slid_towards_the_edge", world->Position(1).x() + 3.6, 1.0);
     EXPECT_LT(world->Position(kLinks).y(), 0.5);  // the last link hangs down the side
   }
 }

@@ -1030,8 +1030,9 @@ TYPED_TEST(ReferenceContactTest, RefusesBadContactSettings) {
     }
   }
   EXPECT_EQ(world.body(1).position.y(), T(2));  // refused before anything moved
-  // The exact solve takes contacts (around its joints; without joints it
-  // is the Gauss-Seidel step): the sphere falls onto the floor and rests,
+  // JointSolver::kExact is accepted with contacts (without joints the step
+  // is Gauss-Seidel's; exact_solve_test checks the exact solve with joints
+  // and contacts, the quadruped): the sphere falls onto the floor and rests,
   // landing deeper than the slop and pushed back to it (float rounding of a
   // 0.5 m coordinate aside).
   for (int i = 0; i < 120; ++i) world.Step(exact);
