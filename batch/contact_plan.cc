@@ -18,26 +18,18 @@ ContactShape ShapeOf(const ShapeSettings& s) {
   shape.half_height = s.half_height;
   shape.half_extents = s.half_extents;
   shape.position = s.position;
-  const double length = std::sqrt(double(s.rotation[0]) * s.rotation[0] +
-                                  double(s.rotation[1]) * s.rotation[1] +
-                                  double(s.rotation[2]) * s.rotation[2] +
-                                  double(s.rotation[3]) * s.rotation[3]);
-  for (int i = 0; i < 4; ++i) shape.rotation[i] = float(s.rotation[i] / length);
+  shape.rotation = Normalized(s.rotation);
   return shape;
 }
 
 // The largest distance of the shape's points from the body's centre of mass.
 float ReachOf(const ShapeSettings& s) {
-  const double centre = std::sqrt(double(s.position[0]) * s.position[0] +
-                                  double(s.position[1]) * s.position[1] +
-                                  double(s.position[2]) * s.position[2]);
+  const double centre = Length(s.position);
   switch (s.type) {
     case ShapeType::kSphere: return float(centre + s.radius);
     case ShapeType::kCapsule: return float(centre + s.half_height + s.radius);
     case ShapeType::kBox:
-      return float(centre + std::sqrt(double(s.half_extents[0]) * s.half_extents[0] +
-                                      double(s.half_extents[1]) * s.half_extents[1] +
-                                      double(s.half_extents[2]) * s.half_extents[2]));
+      return float(centre + Length(s.half_extents));
     default: return 0.0f;
   }
 }

@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cmath>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -17,6 +16,7 @@
 
 #include "batch/npz_writer.h"
 #include "batch/plan.h"
+#include "batch/scene_checks.h"
 
 namespace manyworlds {
 namespace {
@@ -125,11 +125,7 @@ RecordedShape Recorded(const ShapeSettings& shape) {
   }
   r.position = shape.position;
   // Normalised, as the step uses it (a scene may give any non-zero length).
-  const double length = std::sqrt(double(shape.rotation[0]) * shape.rotation[0] +
-                                  double(shape.rotation[1]) * shape.rotation[1] +
-                                  double(shape.rotation[2]) * shape.rotation[2] +
-                                  double(shape.rotation[3]) * shape.rotation[3]);
-  for (int i = 0; i < 4; ++i) r.rotation[i] = float(shape.rotation[i] / length);
+  r.rotation = Normalized(shape.rotation);
   return r;
 }
 

@@ -32,6 +32,15 @@ bool Finite(const Quaternion& q) {
 double Length(const Float3& v) {
   return std::sqrt(double(v[0]) * v[0] + double(v[1]) * v[1] + double(v[2]) * v[2]);
 }
+double Length(const Quaternion& q) {
+  return std::sqrt(double(q[0]) * q[0] + double(q[1]) * q[1] + double(q[2]) * q[2] +
+                   double(q[3]) * q[3]);
+}
+Quaternion Normalized(const Quaternion& q) {
+  const double length = Length(q);
+  return {float(q[0] / length), float(q[1] / length), float(q[2] / length),
+          float(q[3] / length)};
+}
 
 void CheckFinite(const std::string& what, const std::string& field, float x) {
   if (!Finite(x)) Refuse(what, field, "is not finite (" + ValueText(x) + ")");
@@ -61,8 +70,7 @@ void CheckOrientation(const std::string& what, const std::string& field, const Q
   if (!Finite(q)) Refuse(what, field, "has a non-finite component");
   // Eigen normalises a zero quaternion to zero, which would silently give a
   // wrong (not rotated, or zero) frame or inertia.
-  if (std::sqrt(double(q[0]) * q[0] + double(q[1]) * q[1] + double(q[2]) * q[2] +
-                double(q[3]) * q[3]) < 1e-6) {
+  if (Length(q) < 1e-6) {
     Refuse(what, field, "is a zero quaternion");
   }
 }

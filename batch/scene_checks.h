@@ -25,6 +25,9 @@ bool Finite(float x);
 bool Finite(const Float3& v);
 bool Finite(const Quaternion& q);
 double Length(const Float3& v);
+double Length(const Quaternion& q);
+// q / |q| in double, rounded to float: how every rotation of a scene is used.
+Quaternion Normalized(const Quaternion& q);
 
 void CheckFinite(const std::string& what, const std::string& field, float x);
 void CheckFinite(const std::string& what, const std::string& field, const Float3& v);
