@@ -323,10 +323,13 @@ HWY_INLINE LaneMask ContactSolveVelocityChunk(const BodyPair& bodies, ContactLan
                             velocities.MinusJv(t2, manifold.tangent2_row, offset), old2);
   const LaneVec length_squared = hn::MulAdd(new1, new1, hn::Mul(new2, new2));
   const LaneMask outside = hn::Gt(length_squared, hn::Mul(max_linear, max_linear));
-  const LaneVec shrink = hn::Div(
-      max_linear, hn::Sqrt(hn::IfThenElse(outside, length_squared, Splat(1.0f))));
-  new1 = hn::IfThenElse(outside, hn::Mul(new1, shrink), new1);
-  new2 = hn::IfThenElse(outside, hn::Mul(new2, shrink), new2);
+  // Only a chunk with a lane sliding pays the square root and division.
+  if (AnyLane(outside)) {
+    const LaneVec shrink = hn::Div(
+        max_linear, hn::Sqrt(hn::IfThenElse(outside, length_squared, Splat(1.0f))));
+    new1 = hn::IfThenElse(outside, hn::Mul(new1, shrink), new1);
+    new2 = hn::IfThenElse(outside, hn::Mul(new2, shrink), new2);
+  }
   Store(new1, manifold.tangent1_lambda, offset);
   Store(new2, manifold.tangent2_lambda, offset);
   const LaneVec delta1 = hn::Sub(new1, old1);

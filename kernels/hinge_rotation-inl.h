@@ -51,6 +51,11 @@ constexpr float kBlendTowardsA1 = 0.01f;       // and 1% along a1
 HWY_INLINE Vec3 RepairedHingeAxis2(const Vec3& a1, const Vec3& a2) {
   const LaneVec dot = Dot(a1, a2);
   const LaneMask repair = hn::Le(dot, Splat(kRepairBelowDot));
+  // The repair is rare (a hinge bent by 90 degrees or more) and costs three
+  // square roots and divisions: a chunk where no lane needs it skips them.
+  // Each lane still takes a2 or its own repair, so no world's bits depend
+  // on its neighbours.
+  if (!AnyLane(repair)) return a2;
   // Component of a2 perpendicular to a1; where it vanishes (a2 = -a1) any
   // perpendicular of a1 will do. Replacing it in every such lane, repaired or
   // not, keeps the normalisation below finite in all lanes.

@@ -262,6 +262,10 @@ HWY_INLINE Quat QuatFromAxisAngle(const Vec3& unit_axis, LaneVec angle) {
 HWY_INLINE Quat AddRotationStep(const Quat& q, const Vec3& theta) {
   const LaneVec angle = hn::Sqrt(LengthSquared(theta));
   const LaneMask rotates = hn::Gt(angle, Splat(1.0e-6f));
+  // A chunk where no lane turns (bodies at rest, a part with no error)
+  // skips the division, sine, cosine and normalisation: every lane keeps q,
+  // as the select below would give it.
+  if (hn::AllFalse(LaneTag(), rotates)) return q;
   // Lanes that do not rotate divide by 1 instead of by a tiny or zero angle.
   const LaneVec safe_angle = hn::IfThenElse(rotates, angle, Splat(1.0f));
   const Vec3 axis = Scale(theta, hn::Div(Splat(1.0f), safe_angle));
