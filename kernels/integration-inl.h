@@ -41,6 +41,9 @@ namespace HWY_NAMESPACE {
 HWY_INLINE Vec3 ClampLength(const Vec3& v, LaneVec max_length) {
   const LaneVec length_squared = LengthSquared(v);
   const LaneMask too_fast = hn::Gt(length_squared, hn::Mul(max_length, max_length));
+  // The clamp is rare: a chunk where no lane is too fast keeps v without the
+  // square root and division.
+  if (hn::AllFalse(LaneTag(), too_fast)) return v;
   const LaneVec scale = hn::Div(max_length, hn::Sqrt(length_squared));
   return Select(too_fast, Scale(v, scale), v);
 }
