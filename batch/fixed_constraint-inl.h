@@ -43,9 +43,8 @@ inline bool FixedConstraintSolveVelocity(const ConstraintBlock& c) {
 
 inline bool FixedConstraintSolvePosition(const ConstraintBlock& c, const StepScalars& step) {
   auto& s = c.Main<FixedConstraintLanes>();
-  RotationEulerCalculateProperties(c.bodies, s.rotation);
-  bool applied = RotationEulerSolvePosition(c.bodies, s.inv_initial_orientation, s.rotation,
-                                            step.baumgarte);
+  bool applied = RotationEulerRecomputeAndSolvePosition(c.bodies, s.inv_initial_orientation,
+                                                        s.rotation, step.baumgarte);
   PointCalculateProperties(c.bodies, s.anchors, s.point);
   applied |= PointSolvePosition(c.bodies, s.point, step.baumgarte);
   return applied;

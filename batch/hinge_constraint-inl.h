@@ -179,8 +179,13 @@ inline bool HingeConstraintSolvePosition(const ConstraintBlock& c, const StepSca
   PointCalculateProperties(c.bodies, s.anchors, s.point);
   bool applied = PointSolvePosition(c.bodies, s.point, step.baumgarte);
   HingeAxesAndAngle(c, false);
-  HingeRotationCalculateProperties(c.bodies, s.rotation_geometry, s.rotation);
-  applied |= HingeRotationSolvePosition(c.bodies, s.rotation, step.baumgarte);
+  // Where the axes are exactly aligned in every world (a planar mechanism
+  // turning about its hinges only), the step would turn nothing: the
+  // inverse inertias and K^-1 are not worth computing (docs/stepping.md).
+  if (!HingeRotationAxes(s.rotation_geometry, s.rotation)) {
+    HingeRotationEffectiveMass(c.bodies, s.rotation);
+    applied |= HingeRotationSolvePosition(c.bodies, s.rotation, step.baumgarte);
+  }
   if (c.plan.has_limits() && !c.plan.soft_limits) {
     HingeAxesAndAngle(c, true);
     HingeLimitProperties(c, step);

@@ -224,9 +224,8 @@ inline bool SixDofConstraintSolvePosition(const ConstraintBlock& c, const StepSc
   const SixDofConfig& config = c.plan.six_dof;
   bool applied = false;
   if (config.rotation_euler) {
-    RotationEulerCalculateProperties(c.bodies, s.rotation);
-    applied |= RotationEulerSolvePosition(c.bodies, s.inv_initial_orientation, s.rotation,
-                                          step.baumgarte);
+    applied |= RotationEulerRecomputeAndSolvePosition(c.bodies, s.inv_initial_orientation,
+                                                      s.rotation, step.baumgarte);
   } else if (config.rotation_limits) {
     applied |= SwingTwistSolvePosition(c.bodies, c.plan.swing_twist, s.frames,
                                        s.rotation_limits, step.baumgarte);

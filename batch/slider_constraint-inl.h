@@ -163,9 +163,8 @@ inline bool SliderConstraintSolvePosition(const ConstraintBlock& c, const StepSc
   DualAxisCalculateProperties(c.bodies, s.dual_geometry, s.dual);
   bool applied =
       DualAxisSolvePosition(c.bodies, s.dual_geometry, s.separation, s.dual, step.baumgarte);
-  RotationEulerCalculateProperties(c.bodies, s.rotation);
-  applied |= RotationEulerSolvePosition(c.bodies, s.inv_initial_orientation, s.rotation,
-                                        step.baumgarte);
+  applied |= RotationEulerRecomputeAndSolvePosition(c.bodies, s.inv_initial_orientation,
+                                                    s.rotation, step.baumgarte);
   if (c.plan.has_limits() && !c.plan.soft_limits) {
     SliderGeometry(c);
     SliderLimitProperties(c, step);

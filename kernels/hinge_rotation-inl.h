@@ -107,23 +107,34 @@ HWY_INLINE void ApplyImpulse(const BodyPair& bodies, const HingeRotationLanes& p
 
 }  // namespace hinge_rotation
 
-inline void HingeRotationCalculateProperties(const BodyPair& bodies,
-                                             const HingeRotationGeometry& geometry,
-                                             HingeRotationLanes& part) {
+// The first half of CalculateProperties: the axes a1, b2, c2 and the rows'
+// directions b2 x a1, c2 x a1 from the geometry's world axes. Returns true
+// if C = (a1.b2, a1.c2) is exactly zero in every lane: the position phase
+// then has nothing to do (HingeRotationSolvePosition would rotate no body).
+inline bool HingeRotationAxes(const HingeRotationGeometry& geometry, HingeRotationLanes& part) {
+  bool aligned = true;
   ForEachChunk([&](std::size_t offset) {
     const Vec3 a1 = LoadVec3(geometry.hinge_axis1, offset);
     const Vec3 a2 = hinge_rotation::RepairedHingeAxis2(
         a1, LoadVec3(geometry.hinge_axis2, offset));
     const Vec3 b2 = NormalizedPerpendicular(a2);
     const Vec3 c2 = Cross(a2, b2);
-    const Vec3 b2_x_a1 = Cross(b2, a1);
-    const Vec3 c2_x_a1 = Cross(c2, a1);
     StoreVec3(a1, part.a1, offset);
     StoreVec3(b2, part.b2, offset);
     StoreVec3(c2, part.c2, offset);
-    StoreVec3(b2_x_a1, part.b2_x_a1, offset);
-    StoreVec3(c2_x_a1, part.c2_x_a1, offset);
+    StoreVec3(Cross(b2, a1), part.b2_x_a1, offset);
+    StoreVec3(Cross(c2, a1), part.c2_x_a1, offset);
+    aligned &= !AnyLane(hn::Or(hn::Ne(Dot(a1, b2), Zero()), hn::Ne(Dot(a1, c2), Zero())));
+  });
+  return aligned;
+}
 
+// The second half: the inverse inertias times the rows' directions at the
+// bodies' current rotations and K^-1 (HingeRotationAxes first).
+inline void HingeRotationEffectiveMass(const BodyPair& bodies, HingeRotationLanes& part) {
+  ForEachChunk([&](std::size_t offset) {
+    const Vec3 b2_x_a1 = LoadVec3(part.b2_x_a1, offset);
+    const Vec3 c2_x_a1 = LoadVec3(part.c2_x_a1, offset);
     // Non-dynamic bodies have I^-1 = 0: their cached vectors stay zero so that
     // 0 * cache is 0 in every later verb.
     Vec3 inv_i1_b = ZeroVec3(), inv_i1_c = ZeroVec3();
@@ -155,6 +166,13 @@ inline void HingeRotationCalculateProperties(const BodyPair& bodies,
     Store(hn::IfThenElseZero(active, Load(lambda.x, offset)), lambda.x, offset);
     Store(hn::IfThenElseZero(active, Load(lambda.y, offset)), lambda.y, offset);
   });
+}
+
+inline void HingeRotationCalculateProperties(const BodyPair& bodies,
+                                             const HingeRotationGeometry& geometry,
+                                             HingeRotationLanes& part) {
+  HingeRotationAxes(geometry, part);
+  HingeRotationEffectiveMass(bodies, part);
 }
 
 inline void HingeRotationWarmStart(const BodyPair& bodies, HingeRotationLanes& part,

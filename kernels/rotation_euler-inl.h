@@ -171,6 +171,18 @@ HWY_INLINE LaneMask RotationEulerPositionStepOfChunk(const BodyPair& bodies,
   return solve;
 }
 
+// True if C is exactly zero in every lane at the bodies' current rotations:
+// the position step would then turn no body.
+inline bool RotationEulerErrorIsZero(const BodyPair& bodies,
+                                     const QuatLanes& inv_initial_orientation) {
+  bool zero = true;
+  ForEachChunk([&](std::size_t offset) {
+    zero &= !AnyLane(AnyComponentNonZero(
+        RotationEulerError(bodies, LoadQuat(inv_initial_orientation, offset), offset)));
+  });
+  return zero;
+}
+
 inline void RotationEulerCalculateProperties(const BodyPair& bodies,
                                              RotationEulerLanes& part) {
   ForEachChunk([&](std::size_t offset) {
@@ -226,6 +238,21 @@ inline bool RotationEulerSolvePosition(const BodyPair& bodies,
     applied |= AnyLane(solved);
   });
   return applied;
+}
+
+// The position phase's verb: the properties at the current rotations, then
+// one Baumgarte step. Where C is exactly zero in every world (no body 2
+// turned from its rest rotation at all: a planar slider, a weld that holds)
+// the step would turn nothing and K^-1 is not worth computing; the part's
+// cached properties are then left as they were (nothing reads them before
+// the next setup). Returns true if any lane had a non-zero error.
+inline bool RotationEulerRecomputeAndSolvePosition(const BodyPair& bodies,
+                                                   const QuatLanes& inv_initial_orientation,
+                                                   RotationEulerLanes& part,
+                                                   float baumgarte) {
+  if (RotationEulerErrorIsZero(bodies, inv_initial_orientation)) return false;
+  RotationEulerCalculateProperties(bodies, part);
+  return RotationEulerSolvePosition(bodies, inv_initial_orientation, part, baumgarte);
 }
 
 // Jolt's Deactivate of the flagged lanes: K^-1 = 0 and accumulated impulse = 0.
