@@ -110,6 +110,12 @@ HWY_INLINE void AddAngularVelocityStep(BodyLanes& body, const Vec3& delta,
   StoreVec3(Add(LoadVec3(body.angular_velocity, offset), delta),
             body.angular_velocity, offset);
 }
+// w += dw in the lanes of `where` only; the others keep every bit.
+HWY_INLINE void AddAngularVelocityStepWhere(BodyLanes& body, LaneMask where, const Vec3& delta,
+                                            std::size_t offset) {
+  const Vec3 w = LoadVec3(body.angular_velocity, offset);
+  StoreVec3(Select(where, Add(w, delta), w), body.angular_velocity, offset);
+}
 HWY_INLINE void AddLinearVelocityStep(BodyLanes& body, const Vec3& delta,
                                       std::size_t offset) {
   StoreVec3(LockTranslation(body, Add(LoadVec3(body.linear_velocity, offset), delta), offset),

@@ -82,14 +82,17 @@ HWY_INLINE Vec3 InverseInertiaTimesImpulse(const Vec3Lanes& inv_i_b2_x_a1,
 
 // Applies (lambda0, lambda1): body 1 gets -J^T, body 2 +J^T, dynamic bodies
 // only. kVelocity = false makes it a rotation step (position phase).
+// `where` (velocity steps only): the lanes that take the step; the others
+// keep every bit.
 template <bool kVelocity>
 HWY_INLINE void ApplyImpulse(const BodyPair& bodies, const HingeRotationLanes& part,
-                             LaneVec lambda0, LaneVec lambda1, std::size_t offset) {
+                             LaneVec lambda0, LaneVec lambda1, std::size_t offset,
+                             LaneMask where = AllLanes()) {
   if (bodies.motion1 == MotionType::kDynamic) {
     const Vec3 step = Neg(InverseInertiaTimesImpulse(
         part.inv_i1_b2_x_a1, part.inv_i1_c2_x_a1, lambda0, lambda1, offset));
     if (kVelocity) {
-      AddAngularVelocityStep(*bodies.body1, step, offset);
+      AddAngularVelocityStepWhere(*bodies.body1, where, step, offset);
     } else {
       AddRotationStep(*bodies.body1, step, offset);
     }
@@ -98,7 +101,7 @@ HWY_INLINE void ApplyImpulse(const BodyPair& bodies, const HingeRotationLanes& p
     const Vec3 step = InverseInertiaTimesImpulse(
         part.inv_i2_b2_x_a1, part.inv_i2_c2_x_a1, lambda0, lambda1, offset);
     if (kVelocity) {
-      AddAngularVelocityStep(*bodies.body2, step, offset);
+      AddAngularVelocityStepWhere(*bodies.body2, where, step, offset);
     } else {
       AddRotationStep(*bodies.body2, step, offset);
     }
@@ -199,14 +202,21 @@ inline bool HingeRotationSolveVelocity(const BodyPair& bodies,
     // s = -J v
     const LaneVec s0 = Dot(LoadVec3(part.b2_x_a1, offset), relative_angular);
     const LaneVec s1 = Dot(LoadVec3(part.c2_x_a1, offset), relative_angular);
+    // A lane whose axes turn together exactly (s = 0: every planar hinge)
+    // takes no step at all, which Jolt's adding of a zero impulse equals up
+    // to the sign of a zero; a chunk with no other lane skips the rest.
+    const LaneMask turning = hn::Or(hn::Ne(s0, Zero()), hn::Ne(s1, Zero()));
+    if (!AnyLane(turning)) return;
     LaneVec delta0, delta1;
     Multiply(LoadSym22(part.effective_mass, offset), s0, s1, delta0, delta1);
 
     Vec2Lanes& lambda = part.persistent.total_lambda;
-    Store(hn::Add(Load(lambda.x, offset), delta0), lambda.x, offset);
-    Store(hn::Add(Load(lambda.y, offset), delta1), lambda.y, offset);
-    hinge_rotation::ApplyImpulse<true>(bodies, part, delta0, delta1, offset);
-    applied |= AnyLane(hn::Or(hn::Ne(delta0, Zero()), hn::Ne(delta1, Zero())));
+    const LaneVec lambda0 = Load(lambda.x, offset), lambda1 = Load(lambda.y, offset);
+    Store(hn::IfThenElse(turning, hn::Add(lambda0, delta0), lambda0), lambda.x, offset);
+    Store(hn::IfThenElse(turning, hn::Add(lambda1, delta1), lambda1), lambda.y, offset);
+    hinge_rotation::ApplyImpulse<true>(bodies, part, delta0, delta1, offset, turning);
+    applied |= AnyLane(
+        hn::And(turning, hn::Or(hn::Ne(delta0, Zero()), hn::Ne(delta1, Zero()))));
   });
   return applied;
 }
