@@ -181,9 +181,10 @@ inline bool HingeConstraintSolvePosition(const ConstraintBlock& c, const StepSca
   HingeAxesAndAngle(c, false);
   // Where the axes are exactly aligned in every world (a planar mechanism
   // turning about its hinges only), the step would turn nothing: the
-  // inverse inertias and K^-1 are not worth computing (docs/stepping.md).
+  // inverse inertias and K^-1 are not worth computing; an aligned lane is
+  // left as it is either way (docs/stepping.md).
   if (!HingeRotationAxes(s.rotation_geometry, s.rotation)) {
-    HingeRotationEffectiveMass(c.bodies, s.rotation);
+    HingeRotationEffectiveMass(c.bodies, s.rotation, /*position_phase=*/true);
     applied |= HingeRotationSolvePosition(c.bodies, s.rotation, step.baumgarte);
   }
   if (c.plan.has_limits() && !c.plan.soft_limits) {

@@ -133,8 +133,14 @@ inline bool HingeRotationAxes(const HingeRotationGeometry& geometry, HingeRotati
 }
 
 // The second half: the inverse inertias times the rows' directions at the
-// bodies' current rotations and K^-1 (HingeRotationAxes first).
-inline void HingeRotationEffectiveMass(const BodyPair& bodies, HingeRotationLanes& part) {
+// bodies' current rotations and K^-1 (HingeRotationAxes first). Lanes where K
+// is singular are deactivated (K^-1 = 0, impulse cleared); with
+// `position_phase`, only those whose C is not zero: a lane with C = 0 takes
+// no position step and is left exactly as it is, so that it comes out the
+// same whether its block skipped the position step (aligned in every lane)
+// or not.
+inline void HingeRotationEffectiveMass(const BodyPair& bodies, HingeRotationLanes& part,
+                                       bool position_phase = false) {
   ForEachChunk([&](std::size_t offset) {
     const Vec3 b2_x_a1 = LoadVec3(part.b2_x_a1, offset);
     const Vec3 c2_x_a1 = LoadVec3(part.c2_x_a1, offset);
@@ -164,6 +170,12 @@ inline void HingeRotationEffectiveMass(const BodyPair& bodies, HingeRotationLane
                   Dot(c2_x_a1, sum_inv_i_c)};
     LaneMask active;
     StoreSym22(InverseSym22(k, active), part.effective_mass, offset);
+    if (position_phase) {
+      const Vec3 a1 = LoadVec3(part.a1, offset);
+      const LaneMask aligned = hn::And(hn::Eq(Dot(a1, LoadVec3(part.b2, offset)), Zero()),
+                                       hn::Eq(Dot(a1, LoadVec3(part.c2, offset)), Zero()));
+      active = hn::Or(active, aligned);
+    }
     // Singular lanes are deactivated, which also clears their impulse.
     Vec2Lanes& lambda = part.persistent.total_lambda;
     Store(hn::IfThenElseZero(active, Load(lambda.x, offset)), lambda.x, offset);

@@ -241,18 +241,33 @@ inline bool RotationEulerSolvePosition(const BodyPair& bodies,
 }
 
 // The position phase's verb: the properties at the current rotations, then
-// one Baumgarte step. Where C is exactly zero in every world (no body 2
-// turned from its rest rotation at all: a planar slider, a weld that holds)
-// the step would turn nothing and K^-1 is not worth computing; the part's
-// cached properties are then left as they were (nothing reads them before
-// the next setup). Returns true if any lane had a non-zero error.
+// one Baumgarte step. A lane whose C is exactly zero takes no step and is
+// left exactly as it is (its impulse is not cleared even if K has become
+// singular since the setup, where Jolt's recompute would clear it); where
+// that holds in every world (no body 2 turned from its rest rotation at
+// all: a planar slider, a weld that holds) K^-1 is not computed, and the
+// part's cached properties keep their setup values, which nothing reads
+// before the next setup. Returns true if any lane had a non-zero error.
 inline bool RotationEulerRecomputeAndSolvePosition(const BodyPair& bodies,
                                                    const QuatLanes& inv_initial_orientation,
                                                    RotationEulerLanes& part,
                                                    float baumgarte) {
   if (RotationEulerErrorIsZero(bodies, inv_initial_orientation)) return false;
-  RotationEulerCalculateProperties(bodies, part);
-  return RotationEulerSolvePosition(bodies, inv_initial_orientation, part, baumgarte);
+  bool applied = false;
+  ForEachChunk([&](std::size_t offset) {
+    const Quat inv_initial = LoadQuat(inv_initial_orientation, offset);
+    const LaneMask off_rest =
+        AnyComponentNonZero(RotationEulerError(bodies, inv_initial, offset));
+    LaneMask active;
+    const RotationEulerChunk chunk = RotationEulerPropertiesOfChunk(bodies, offset, active);
+    StoreSym33(chunk.inv_i1, part.inv_i1, offset);
+    StoreSym33(chunk.inv_i2, part.inv_i2, offset);
+    StoreSym33(chunk.effective_mass, part.effective_mass, offset);
+    ClearWhere(hn::AndNot(active, off_rest), part.persistent.total_lambda, offset);
+    applied |= AnyLane(RotationEulerPositionStepOfChunk(bodies, chunk, inv_initial, baumgarte,
+                                                        AllLanes(), offset));
+  });
+  return applied;
 }
 
 // Jolt's Deactivate of the flagged lanes: K^-1 = 0 and accumulated impulse = 0.
