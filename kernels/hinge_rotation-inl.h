@@ -70,6 +70,12 @@ HWY_INLINE Vec3 RepairedHingeAxis2(const Vec3& a1, const Vec3& a2) {
   return Select(repair, blended, a2);
 }
 
+// The lanes where C = (a1.b2, a1.c2) is exactly zero: the axes aligned, the
+// position step a no-op (a NaN lane is not aligned).
+HWY_INLINE LaneMask Aligned(const Vec3& a1, const Vec3& b2, const Vec3& c2) {
+  return hn::And(hn::Eq(Dot(a1, b2), Zero()), hn::Eq(Dot(a1, c2), Zero()));
+}
+
 // Angular impulse of the two rows: P = (b2 x a1) lambda0 + (c2 x a1) lambda1,
 // already multiplied by a body's inverse inertia through the cached vectors.
 HWY_INLINE Vec3 InverseInertiaTimesImpulse(const Vec3Lanes& inv_i_b2_x_a1,
@@ -127,7 +133,7 @@ inline bool HingeRotationAxes(const HingeRotationGeometry& geometry, HingeRotati
     StoreVec3(c2, part.c2, offset);
     StoreVec3(Cross(b2, a1), part.b2_x_a1, offset);
     StoreVec3(Cross(c2, a1), part.c2_x_a1, offset);
-    aligned &= !AnyLane(hn::Or(hn::Ne(Dot(a1, b2), Zero()), hn::Ne(Dot(a1, c2), Zero())));
+    aligned &= hn::AllTrue(LaneTag(), hinge_rotation::Aligned(a1, b2, c2));
   });
   return aligned;
 }
@@ -171,10 +177,9 @@ inline void HingeRotationEffectiveMass(const BodyPair& bodies, HingeRotationLane
     LaneMask active;
     StoreSym22(InverseSym22(k, active), part.effective_mass, offset);
     if (position_phase) {
-      const Vec3 a1 = LoadVec3(part.a1, offset);
-      const LaneMask aligned = hn::And(hn::Eq(Dot(a1, LoadVec3(part.b2, offset)), Zero()),
-                                       hn::Eq(Dot(a1, LoadVec3(part.c2, offset)), Zero()));
-      active = hn::Or(active, aligned);
+      active = hn::Or(active, hinge_rotation::Aligned(LoadVec3(part.a1, offset),
+                                                      LoadVec3(part.b2, offset),
+                                                      LoadVec3(part.c2, offset)));
     }
     // Singular lanes are deactivated, which also clears their impulse.
     Vec2Lanes& lambda = part.persistent.total_lambda;

@@ -122,6 +122,14 @@ HWY_INLINE Quat InverseInitialOrientationFromFrames(const Vec3& first1,
   return Select(same, IdentityQuat(), Mul(frame2, Conjugate(frame1)));
 }
 
+// Stores one chunk's calculated properties into the part.
+HWY_INLINE void StoreProperties(const RotationEulerChunk& chunk, RotationEulerLanes& part,
+                                std::size_t offset) {
+  StoreSym33(chunk.inv_i1, part.inv_i1, offset);
+  StoreSym33(chunk.inv_i2, part.inv_i2, offset);
+  StoreSym33(chunk.effective_mass, part.effective_mass, offset);
+}
+
 }  // namespace rotation_euler
 
 // K = I1^-1 + I2^-1 at the bodies' current rotations, inverted with the
@@ -188,9 +196,7 @@ inline void RotationEulerCalculateProperties(const BodyPair& bodies,
   ForEachChunk([&](std::size_t offset) {
     LaneMask active;
     const RotationEulerChunk chunk = RotationEulerPropertiesOfChunk(bodies, offset, active);
-    StoreSym33(chunk.inv_i1, part.inv_i1, offset);
-    StoreSym33(chunk.inv_i2, part.inv_i2, offset);
-    StoreSym33(chunk.effective_mass, part.effective_mass, offset);
+    rotation_euler::StoreProperties(chunk, part, offset);
     // Singular lanes are deactivated, which also clears their impulse.
     ClearWhere(hn::Not(active), part.persistent.total_lambda, offset);
   });
@@ -260,9 +266,7 @@ inline bool RotationEulerRecomputeAndSolvePosition(const BodyPair& bodies,
         AnyComponentNonZero(RotationEulerError(bodies, inv_initial, offset));
     LaneMask active;
     const RotationEulerChunk chunk = RotationEulerPropertiesOfChunk(bodies, offset, active);
-    StoreSym33(chunk.inv_i1, part.inv_i1, offset);
-    StoreSym33(chunk.inv_i2, part.inv_i2, offset);
-    StoreSym33(chunk.effective_mass, part.effective_mass, offset);
+    rotation_euler::StoreProperties(chunk, part, offset);
     ClearWhere(hn::AndNot(active, off_rest), part.persistent.total_lambda, offset);
     applied |= AnyLane(RotationEulerPositionStepOfChunk(bodies, chunk, inv_initial, baumgarte,
                                                         AllLanes(), offset));
