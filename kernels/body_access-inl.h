@@ -96,25 +96,50 @@ HWY_INLINE Vec3 BodyInverseInertiaTimes(const BodyLanes& body, const Vec3& v,
                   offset);
 }
 
-// v <- lockT(v + dv), w += dw (a velocity step; callers pass signed increments).
+// The lanes of a velocity solve's chunk that take a step: those whose -J v
+// is not exactly zero. A lane with -J v = 0 takes no step at all, which
+// Jolt's adding of the zero impulse K^-1 0 equals up to the sign of a zero
+// (and keeps a non-finite K^-1 from making a NaN of it); a chunk where no
+// lane steps skips the rest of the solve (docs/stepping.md, "Work skipped
+// where no world of a block needs it"). A chunk where every lane steps
+// takes the step without selects (where = nullptr below).
+struct SteppingLanes {
+  LaneMask mask;
+  bool every;
+  bool none;
+};
+HWY_INLINE SteppingLanes LanesThatStep(LaneMask non_zero) {
+  return {non_zero, hn::AllTrue(LaneTag(), non_zero), hn::AllFalse(LaneTag(), non_zero)};
+}
+
+// `stepped` in the lanes of *where (every lane for nullptr), `kept` elsewhere.
+HWY_INLINE LaneVec KeepUnless(std::nullptr_t, LaneVec stepped, LaneVec) { return stepped; }
+HWY_INLINE LaneVec KeepUnless(const LaneMask* where, LaneVec stepped, LaneVec kept) {
+  return hn::IfThenElse(*where, stepped, kept);
+}
+HWY_INLINE Vec3 KeepUnless(std::nullptr_t, const Vec3& stepped, const Vec3&) { return stepped; }
+HWY_INLINE Vec3 KeepUnless(const LaneMask* where, const Vec3& stepped, const Vec3& kept) {
+  return Select(*where, stepped, kept);
+}
+
+// v <- lockT(v + dv), w += dw (a velocity step; callers pass signed
+// increments), in the lanes of *where only (every lane for nullptr): the
+// others keep every bit.
+template <class Where = std::nullptr_t>
 HWY_INLINE void AddVelocityStep(BodyLanes& body, const Vec3& linear_delta,
-                                const Vec3& angular_delta, std::size_t offset) {
-  StoreVec3(LockTranslation(body, Add(LoadVec3(body.linear_velocity, offset), linear_delta),
-                            offset),
-            body.linear_velocity, offset);
-  StoreVec3(Add(LoadVec3(body.angular_velocity, offset), angular_delta),
-            body.angular_velocity, offset);
-}
-HWY_INLINE void AddAngularVelocityStep(BodyLanes& body, const Vec3& delta,
-                                       std::size_t offset) {
-  StoreVec3(Add(LoadVec3(body.angular_velocity, offset), delta),
-            body.angular_velocity, offset);
-}
-// w += dw in the lanes of `where` only; the others keep every bit.
-HWY_INLINE void AddAngularVelocityStepWhere(BodyLanes& body, LaneMask where, const Vec3& delta,
-                                            std::size_t offset) {
+                                const Vec3& angular_delta, std::size_t offset,
+                                Where where = nullptr) {
+  const Vec3 v = LoadVec3(body.linear_velocity, offset);
   const Vec3 w = LoadVec3(body.angular_velocity, offset);
-  StoreVec3(Select(where, Add(w, delta), w), body.angular_velocity, offset);
+  StoreVec3(KeepUnless(where, LockTranslation(body, Add(v, linear_delta), offset), v),
+            body.linear_velocity, offset);
+  StoreVec3(KeepUnless(where, Add(w, angular_delta), w), body.angular_velocity, offset);
+}
+template <class Where = std::nullptr_t>
+HWY_INLINE void AddAngularVelocityStep(BodyLanes& body, const Vec3& delta, std::size_t offset,
+                                       Where where = nullptr) {
+  const Vec3 w = LoadVec3(body.angular_velocity, offset);
+  StoreVec3(KeepUnless(where, Add(w, delta), w), body.angular_velocity, offset);
 }
 HWY_INLINE void AddLinearVelocityStep(BodyLanes& body, const Vec3& delta,
                                       std::size_t offset) {

@@ -53,10 +53,12 @@ HWY_INLINE void AddBodyToInverseEffectiveMass(const BodyLanes& body,
 
 // Applies the impulse (lambda0, lambda1) along (n1, n2): body 1 gets -J^T,
 // body 2 +J^T. kVelocity = false makes it a position and rotation step.
-template <bool kVelocity>
+// `where` (velocity steps only): the lanes that take the step (AddVelocityStep).
+template <bool kVelocity, class Where = std::nullptr_t>
 HWY_INLINE void ApplyImpulse(const BodyPair& bodies, const DualAxisGeometry& geometry,
                              const DualAxisLanes& part, LaneVec lambda0,
-                             LaneVec lambda1, std::size_t offset) {
+                             LaneVec lambda1, std::size_t offset,
+                             Where where = nullptr) {
   const Vec3 impulse = MulAdd(LoadVec3(geometry.n1, offset), lambda0,
                               Scale(LoadVec3(geometry.n2, offset), lambda1));
   if (bodies.motion1 == MotionType::kDynamic) {
@@ -66,7 +68,7 @@ HWY_INLINE void ApplyImpulse(const BodyPair& bodies, const DualAxisGeometry& geo
         LoadVec3(part.inv_i1_r1_plus_u_x_n1, offset), lambda0,
         Scale(LoadVec3(part.inv_i1_r1_plus_u_x_n2, offset), lambda1)));
     if (kVelocity) {
-      AddVelocityStep(*bodies.body1, linear, angular, offset);
+      AddVelocityStep(*bodies.body1, linear, angular, offset, where);
     } else {
       AddPositionStep(*bodies.body1, linear, offset);
       AddRotationStep(*bodies.body1, angular, offset);
@@ -79,7 +81,7 @@ HWY_INLINE void ApplyImpulse(const BodyPair& bodies, const DualAxisGeometry& geo
         MulAdd(LoadVec3(part.inv_i2_r2_x_n1, offset), lambda0,
                Scale(LoadVec3(part.inv_i2_r2_x_n2, offset), lambda1));
     if (kVelocity) {
-      AddVelocityStep(*bodies.body2, linear, angular, offset);
+      AddVelocityStep(*bodies.body2, linear, angular, offset, where);
     } else {
       AddPositionStep(*bodies.body2, linear, offset);
       AddRotationStep(*bodies.body2, angular, offset);
@@ -168,14 +170,28 @@ inline bool DualAxisSolveVelocity(const BodyPair& bodies,
         hn::Sub(hn::Add(Dot(LoadVec3(geometry.n2, offset), relative_linear),
                         Dot(LoadVec3(part.r1_plus_u_x_n2, offset), w1)),
                 Dot(LoadVec3(part.r2_x_n2, offset), w2));
+    // A lane moving exactly along the axis (every rail of a planar
+    // mechanism) takes no step (SteppingLanes).
+    const SteppingLanes off_axis =
+        LanesThatStep(hn::Or(hn::Ne(s0, Zero()), hn::Ne(s1, Zero())));
+    if (off_axis.none) return;
     LaneVec delta0, delta1;
     Multiply(LoadSym22(part.effective_mass, offset), s0, s1, delta0, delta1);
 
     Vec2Lanes& lambda = part.persistent.total_lambda;
-    Store(hn::Add(Load(lambda.x, offset), delta0), lambda.x, offset);
-    Store(hn::Add(Load(lambda.y, offset), delta1), lambda.y, offset);
-    dual_axis::ApplyImpulse<true>(bodies, geometry, part, delta0, delta1, offset);
-    applied |= AnyLane(hn::Or(hn::Ne(delta0, Zero()), hn::Ne(delta1, Zero())));
+    const LaneVec lambda0 = Load(lambda.x, offset), lambda1 = Load(lambda.y, offset);
+    if (off_axis.every) {
+      Store(hn::Add(lambda0, delta0), lambda.x, offset);
+      Store(hn::Add(lambda1, delta1), lambda.y, offset);
+      dual_axis::ApplyImpulse<true>(bodies, geometry, part, delta0, delta1, offset);
+    } else {
+      Store(hn::IfThenElse(off_axis.mask, hn::Add(lambda0, delta0), lambda0), lambda.x, offset);
+      Store(hn::IfThenElse(off_axis.mask, hn::Add(lambda1, delta1), lambda1), lambda.y, offset);
+      dual_axis::ApplyImpulse<true>(bodies, geometry, part, delta0, delta1, offset,
+                                    &off_axis.mask);
+    }
+    applied |= AnyLane(
+        hn::And(off_axis.mask, hn::Or(hn::Ne(delta0, Zero()), hn::Ne(delta1, Zero()))));
   });
   return applied;
 }

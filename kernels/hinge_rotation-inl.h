@@ -90,15 +90,15 @@ HWY_INLINE Vec3 InverseInertiaTimesImpulse(const Vec3Lanes& inv_i_b2_x_a1,
 // only. kVelocity = false makes it a rotation step (position phase).
 // `where` (velocity steps only): the lanes that take the step; the others
 // keep every bit.
-template <bool kVelocity>
+template <bool kVelocity, class Where = std::nullptr_t>
 HWY_INLINE void ApplyImpulse(const BodyPair& bodies, const HingeRotationLanes& part,
                              LaneVec lambda0, LaneVec lambda1, std::size_t offset,
-                             LaneMask where = AllLanes()) {
+                             Where where = nullptr) {
   if (bodies.motion1 == MotionType::kDynamic) {
     const Vec3 step = Neg(InverseInertiaTimesImpulse(
         part.inv_i1_b2_x_a1, part.inv_i1_c2_x_a1, lambda0, lambda1, offset));
     if (kVelocity) {
-      AddAngularVelocityStepWhere(*bodies.body1, where, step, offset);
+      AddAngularVelocityStep(*bodies.body1, step, offset, where);
     } else {
       AddRotationStep(*bodies.body1, step, offset);
     }
@@ -107,7 +107,7 @@ HWY_INLINE void ApplyImpulse(const BodyPair& bodies, const HingeRotationLanes& p
     const Vec3 step = InverseInertiaTimesImpulse(
         part.inv_i2_b2_x_a1, part.inv_i2_c2_x_a1, lambda0, lambda1, offset);
     if (kVelocity) {
-      AddAngularVelocityStepWhere(*bodies.body2, where, step, offset);
+      AddAngularVelocityStep(*bodies.body2, step, offset, where);
     } else {
       AddRotationStep(*bodies.body2, step, offset);
     }
@@ -220,20 +220,26 @@ inline bool HingeRotationSolveVelocity(const BodyPair& bodies,
     const LaneVec s0 = Dot(LoadVec3(part.b2_x_a1, offset), relative_angular);
     const LaneVec s1 = Dot(LoadVec3(part.c2_x_a1, offset), relative_angular);
     // A lane whose axes turn together exactly (s = 0: every planar hinge)
-    // takes no step at all, which Jolt's adding of a zero impulse equals up
-    // to the sign of a zero; a chunk with no other lane skips the rest.
-    const LaneMask turning = hn::Or(hn::Ne(s0, Zero()), hn::Ne(s1, Zero()));
-    if (!AnyLane(turning)) return;
+    // takes no step (SteppingLanes).
+    const SteppingLanes turning =
+        LanesThatStep(hn::Or(hn::Ne(s0, Zero()), hn::Ne(s1, Zero())));
+    if (turning.none) return;
     LaneVec delta0, delta1;
     Multiply(LoadSym22(part.effective_mass, offset), s0, s1, delta0, delta1);
 
     Vec2Lanes& lambda = part.persistent.total_lambda;
     const LaneVec lambda0 = Load(lambda.x, offset), lambda1 = Load(lambda.y, offset);
-    Store(hn::IfThenElse(turning, hn::Add(lambda0, delta0), lambda0), lambda.x, offset);
-    Store(hn::IfThenElse(turning, hn::Add(lambda1, delta1), lambda1), lambda.y, offset);
-    hinge_rotation::ApplyImpulse<true>(bodies, part, delta0, delta1, offset, turning);
+    if (turning.every) {
+      Store(hn::Add(lambda0, delta0), lambda.x, offset);
+      Store(hn::Add(lambda1, delta1), lambda.y, offset);
+      hinge_rotation::ApplyImpulse<true>(bodies, part, delta0, delta1, offset);
+    } else {
+      Store(hn::IfThenElse(turning.mask, hn::Add(lambda0, delta0), lambda0), lambda.x, offset);
+      Store(hn::IfThenElse(turning.mask, hn::Add(lambda1, delta1), lambda1), lambda.y, offset);
+      hinge_rotation::ApplyImpulse<true>(bodies, part, delta0, delta1, offset, &turning.mask);
+    }
     applied |= AnyLane(
-        hn::And(turning, hn::Or(hn::Ne(delta0, Zero()), hn::Ne(delta1, Zero()))));
+        hn::And(turning.mask, hn::Or(hn::Ne(delta0, Zero()), hn::Ne(delta1, Zero()))));
   });
   return applied;
 }

@@ -72,15 +72,17 @@ HWY_INLINE void AddBodyToInverseEffectiveMass(LaneVec inv_mass, const Mat33& a,
 
 // Applies the impulse `lambda` (world, linear): body 1 gets -J^T lambda,
 // body 2 +J^T lambda. kVelocity = false makes it a position and rotation step.
-template <bool kVelocity>
+// `where` (velocity steps only): the lanes that take the step (AddVelocityStep).
+template <bool kVelocity, class Where = std::nullptr_t>
 HWY_INLINE void ApplyImpulse(const BodyPair& bodies, const PointLanes& part,
-                             const Vec3& lambda, std::size_t offset) {
+                             const Vec3& lambda, std::size_t offset,
+                             Where where = nullptr) {
   if (bodies.motion1 == MotionType::kDynamic) {
     const LaneVec inv_mass = Load(bodies.body1->inv_mass, offset);
     const Vec3 linear = Scale(lambda, hn::Neg(inv_mass));
     const Vec3 angular = Neg(Multiply(LoadMat33(part.inv_i1_r1_cross, offset), lambda));
     if (kVelocity) {
-      AddVelocityStep(*bodies.body1, linear, angular, offset);
+      AddVelocityStep(*bodies.body1, linear, angular, offset, where);
     } else {
       AddPositionStep(*bodies.body1, linear, offset);
       AddRotationStep(*bodies.body1, angular, offset);
@@ -91,7 +93,7 @@ HWY_INLINE void ApplyImpulse(const BodyPair& bodies, const PointLanes& part,
     const Vec3 linear = Scale(lambda, inv_mass);
     const Vec3 angular = Multiply(LoadMat33(part.inv_i2_r2_cross, offset), lambda);
     if (kVelocity) {
-      AddVelocityStep(*bodies.body2, linear, angular, offset);
+      AddVelocityStep(*bodies.body2, linear, angular, offset, where);
     } else {
       AddPositionStep(*bodies.body2, linear, offset);
       AddRotationStep(*bodies.body2, angular, offset);
@@ -164,11 +166,22 @@ inline bool PointSolveVelocity(const BodyPair& bodies, PointLanes& part) {
               Cross(LoadVec3(part.r2, offset),
                     LoadVec3(bodies.body2->angular_velocity, offset)));
     }
+    // A lane whose anchors move together exactly (bodies turning about
+    // the joint's axis through their centres: gears, pinions) takes no step
+    // (SteppingLanes).
+    const SteppingLanes apart = LanesThatStep(AnyComponentNonZero(s));
+    if (apart.none) return;
     const Vec3 delta = Multiply(LoadSym33(part.effective_mass, offset), s);
-    StoreVec3(Add(point::LoadLambda(part, offset), delta), part.persistent.total_lambda,
-              offset);
-    point::ApplyImpulse<true>(bodies, part, delta, offset);
-    applied |= AnyLane(AnyComponentNonZero(delta));
+    const Vec3 lambda = point::LoadLambda(part, offset);
+    if (apart.every) {
+      StoreVec3(Add(lambda, delta), part.persistent.total_lambda, offset);
+      point::ApplyImpulse<true>(bodies, part, delta, offset);
+    } else {
+      StoreVec3(Select(apart.mask, Add(lambda, delta), lambda), part.persistent.total_lambda,
+                offset);
+      point::ApplyImpulse<true>(bodies, part, delta, offset, &apart.mask);
+    }
+    applied |= AnyLane(hn::And(apart.mask, AnyComponentNonZero(delta)));
   });
   return applied;
 }

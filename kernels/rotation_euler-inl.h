@@ -68,15 +68,16 @@ HWY_INLINE Sym33 ReplaceZeroColumnsByIdentity(const Sym33& k) {
 }
 
 // Applies the angular impulse `lambda`: body 1 gets -I1^-1 lambda, body 2
-// +I2^-1 lambda. kVelocity = false makes it a rotation step.
-template <bool kVelocity>
+// +I2^-1 lambda. kVelocity = false makes it a rotation step. `where` (velocity
+// steps only): the lanes that take the step (AddAngularVelocityStep).
+template <bool kVelocity, class Where = std::nullptr_t>
 HWY_INLINE void ApplyImpulse(const BodyPair& bodies, const Sym33& inv_i1,
                              const Sym33& inv_i2, const Vec3& lambda,
-                             std::size_t offset) {
+                             std::size_t offset, Where where = nullptr) {
   if (bodies.motion1 == MotionType::kDynamic) {
     const Vec3 angular = Neg(Multiply(inv_i1, lambda));
     if (kVelocity) {
-      AddAngularVelocityStep(*bodies.body1, angular, offset);
+      AddAngularVelocityStep(*bodies.body1, angular, offset, where);
     } else {
       AddRotationStep(*bodies.body1, angular, offset);
     }
@@ -84,7 +85,7 @@ HWY_INLINE void ApplyImpulse(const BodyPair& bodies, const Sym33& inv_i1,
   if (bodies.motion2 == MotionType::kDynamic) {
     const Vec3 angular = Multiply(inv_i2, lambda);
     if (kVelocity) {
-      AddAngularVelocityStep(*bodies.body2, angular, offset);
+      AddAngularVelocityStep(*bodies.body2, angular, offset, where);
     } else {
       AddRotationStep(*bodies.body2, angular, offset);
     }
@@ -220,12 +221,22 @@ inline bool RotationEulerSolveVelocity(const BodyPair& bodies, RotationEulerLane
     // -J v = w1 - w2
     const Vec3 relative = Sub(AngularVelocity(*bodies.body1, bodies.motion1, offset),
                               AngularVelocity(*bodies.body2, bodies.motion2, offset));
+    // A lane whose bodies turn together exactly (every slider of a planar
+    // mechanism) takes no step (SteppingLanes).
+    const SteppingLanes turning = LanesThatStep(AnyComponentNonZero(relative));
+    if (turning.none) return;
     const Vec3 delta = Multiply(LoadSym33(part.effective_mass, offset), relative);
-    StoreVec3(Add(LoadVec3(part.persistent.total_lambda, offset), delta),
-              part.persistent.total_lambda, offset);
-    rotation_euler::ApplyImpulse<true>(bodies, LoadSym33(part.inv_i1, offset),
-                                       LoadSym33(part.inv_i2, offset), delta, offset);
-    applied |= AnyLane(AnyComponentNonZero(delta));
+    const Vec3 lambda = LoadVec3(part.persistent.total_lambda, offset);
+    const Sym33 inv_i1 = LoadSym33(part.inv_i1, offset), inv_i2 = LoadSym33(part.inv_i2, offset);
+    if (turning.every) {
+      StoreVec3(Add(lambda, delta), part.persistent.total_lambda, offset);
+      rotation_euler::ApplyImpulse<true>(bodies, inv_i1, inv_i2, delta, offset);
+    } else {
+      StoreVec3(Select(turning.mask, Add(lambda, delta), lambda), part.persistent.total_lambda,
+                offset);
+      rotation_euler::ApplyImpulse<true>(bodies, inv_i1, inv_i2, delta, offset, &turning.mask);
+    }
+    applied |= AnyLane(hn::And(turning.mask, AnyComponentNonZero(delta)));
   });
   return applied;
 }

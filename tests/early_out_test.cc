@@ -1,7 +1,8 @@
 // The step skips work a block does not need (docs/stepping.md, "Work skipped
 // where no world of a block needs it"): the hinge axes' repair, a rotation
-// step, a velocity clamp or a friction clamp no lane takes, and the position
-// step of a rotation-only part whose error is exactly zero in every world.
+// step, a velocity clamp or a friction clamp no lane takes, the position
+// step of a rotation-only part whose error is exactly zero in every world,
+// and the velocity step of a part whose -J v is exactly zero in every world.
 // The decision is made per block (or per chunk) from all of its worlds, so a
 // world's bits must never depend on whether its neighbours needed the work.
 //
@@ -101,6 +102,8 @@ Float3 CartForce(std::size_t world, int step) {
   return {std::sin(0.7f * float(world) + 0.1f * float(step)) * 8.0f, 0.0f, 0.0f};
 }
 
+Float3 NoForce(std::size_t, int) { return {0.0f, 0.0f, 0.0f}; }
+
 class EarlyOutTest : public ::testing::TestWithParam<std::int64_t> {};
 
 // Cartpole is planar: its hinge axes stay exactly aligned and its cart never
@@ -137,6 +140,37 @@ TEST_P(EarlyOutTest, VelocityClampedInOneWorld) {
       CartForce);
 }
 
+// rackpinion turns its pinion about a fixed axle through its centre and
+// slides its rack exactly along its rail: the velocity steps of the pinion
+// hinge's point part, the rail's two rows and the rack's rotation rows see
+// -J v = 0 in every world and are skipped. A rack knocked off its rail and
+// turned, and a pinion pushed off its axle, need them all.
+TEST_P(EarlyOutTest, RackKnockedOffItsRailInOneWorld) {
+  ExpectTwinsAgree(
+      "rackpinion", GetParam(), rs::kRack,
+      [](std::vector<float>& state, std::size_t bodies, std::size_t world) {
+        float* rack = Row(state, bodies, world, rs::kRack);
+        rack[8] = 0.3f;   // linear velocity off the rail (Y)
+        rack[12] = 0.5f;  // turning about Z
+        Row(state, bodies, world, rs::kPinion)[7] = 0.2f;
+      },
+      CartForce);
+}
+
+// geartrain's gears turn about their centres: the hinges' point parts are
+// skipped in every world but one whose gear was pushed off its axle (a
+// lever arm that turns with the gear, corrected a fifth per iteration).
+TEST_P(EarlyOutTest, GearPushedOffItsAxleInOneWorld) {
+  ExpectTwinsAgree(
+      "geartrain", GetParam(), rs::kGear2,
+      [](std::vector<float>& state, std::size_t bodies, std::size_t world) {
+        float* gear = Row(state, bodies, world, rs::kGear2);
+        gear[1] += 0.01f;
+        gear[8] = -0.4f;
+      },
+      NoForce);
+}
+
 // box-drop's boxes land and rest; one box thrown sideways slides, so its
 // friction impulse is clamped to the friction circle.
 TEST_P(EarlyOutTest, FrictionClampedInOneWorld) {
@@ -147,7 +181,7 @@ TEST_P(EarlyOutTest, FrictionClampedInOneWorld) {
         box[7] = 6.0f;
         box[9] = -3.0f;
       },
-      [](std::size_t, int) { return Float3{0.0f, 0.0f, 0.0f}; });
+      NoForce);
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryTarget, EarlyOutTest,
