@@ -76,8 +76,7 @@ inline bool ConeConstraintSolveVelocity(const ConstraintBlock& c) {
 
 inline bool ConeConstraintSolvePosition(const ConstraintBlock& c, const StepScalars& step) {
   auto& s = c.Main<ConeConstraintLanes>();
-  PointCalculateProperties(c.bodies, s.anchors, s.point);
-  const bool point = PointSolvePosition(c.bodies, s.point, step.baumgarte);
+  const bool point = PointRecomputeAndSolvePosition(c.bodies, s.anchors, s.point, step.baumgarte);
   ConeRotationProperties(c);
   return AngleSolvePosition(c.bodies, s.geometry, s.angle, step.baumgarte) || point;
 }

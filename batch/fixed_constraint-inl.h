@@ -45,8 +45,7 @@ inline bool FixedConstraintSolvePosition(const ConstraintBlock& c, const StepSca
   auto& s = c.Main<FixedConstraintLanes>();
   bool applied = RotationEulerRecomputeAndSolvePosition(c.bodies, s.inv_initial_orientation,
                                                         s.rotation, step.baumgarte);
-  PointCalculateProperties(c.bodies, s.anchors, s.point);
-  applied |= PointSolvePosition(c.bodies, s.point, step.baumgarte);
+  applied |= PointRecomputeAndSolvePosition(c.bodies, s.anchors, s.point, step.baumgarte);
   return applied;
 }
 

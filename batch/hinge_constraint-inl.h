@@ -176,8 +176,7 @@ inline bool HingeConstraintSolveVelocity(const ConstraintBlock& c) {
 
 inline bool HingeConstraintSolvePosition(const ConstraintBlock& c, const StepScalars& step) {
   auto& s = c.Main<HingeConstraintLanes>();
-  PointCalculateProperties(c.bodies, s.anchors, s.point);
-  bool applied = PointSolvePosition(c.bodies, s.point, step.baumgarte);
+  bool applied = PointRecomputeAndSolvePosition(c.bodies, s.anchors, s.point, step.baumgarte);
   HingeAxesAndAngle(c, false);
   // Where the axes are exactly aligned in every world (a planar mechanism
   // turning about its hinges only), the step would turn nothing: the

@@ -34,8 +34,7 @@ inline bool PointConstraintSolveVelocity(const ConstraintBlock& c) {
 
 inline bool PointConstraintSolvePosition(const ConstraintBlock& c, const StepScalars& step) {
   auto& s = c.Main<PointConstraintLanes>();
-  PointCalculateProperties(c.bodies, s.anchors, s.point);
-  return PointSolvePosition(c.bodies, s.point, step.baumgarte);
+  return PointRecomputeAndSolvePosition(c.bodies, s.anchors, s.point, step.baumgarte);
 }
 
 }  // namespace HWY_NAMESPACE

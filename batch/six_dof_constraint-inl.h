@@ -231,8 +231,7 @@ inline bool SixDofConstraintSolvePosition(const ConstraintBlock& c, const StepSc
                                        s.rotation_limits, step.baumgarte);
   }
   if (config.translation_point) {
-    PointCalculateProperties(c.bodies, s.fixed_anchors, s.point);
-    applied |= PointSolvePosition(c.bodies, s.point, step.baumgarte);
+    applied |= PointRecomputeAndSolvePosition(c.bodies, s.fixed_anchors, s.point, step.baumgarte);
   }
   for (int i = 0; i < 3; ++i) {
     if (!SixDofHasTranslationRow(config, i) || config.translation_soft[i]) continue;

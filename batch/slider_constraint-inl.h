@@ -160,9 +160,8 @@ inline bool SliderConstraintSolveVelocity(const ConstraintBlock& c) {
 inline bool SliderConstraintSolvePosition(const ConstraintBlock& c, const StepScalars& step) {
   auto& s = c.Main<SliderConstraintLanes>();
   SliderGeometry(c);
-  DualAxisCalculateProperties(c.bodies, s.dual_geometry, s.dual);
-  bool applied =
-      DualAxisSolvePosition(c.bodies, s.dual_geometry, s.separation, s.dual, step.baumgarte);
+  bool applied = DualAxisRecomputeAndSolvePosition(c.bodies, s.dual_geometry, s.separation,
+                                                   s.dual, step.baumgarte);
   applied |= RotationEulerRecomputeAndSolvePosition(c.bodies, s.inv_initial_orientation,
                                                     s.rotation, step.baumgarte);
   if (c.plan.has_limits() && !c.plan.soft_limits) {

@@ -56,8 +56,7 @@ inline bool SwingTwistConstraintSolvePosition(const ConstraintBlock& c,
   auto& s = c.Main<SwingTwistConstraintLanes>();
   const bool limits = SwingTwistSolvePosition(c.bodies, c.plan.swing_twist, s.frames,
                                               s.limits, step.baumgarte);
-  PointCalculateProperties(c.bodies, s.anchors, s.point);
-  return PointSolvePosition(c.bodies, s.point, step.baumgarte) || limits;
+  return PointRecomputeAndSolvePosition(c.bodies, s.anchors, s.point, step.baumgarte) || limits;
 }
 
 }  // namespace HWY_NAMESPACE

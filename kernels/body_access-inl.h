@@ -96,13 +96,14 @@ HWY_INLINE Vec3 BodyInverseInertiaTimes(const BodyLanes& body, const Vec3& v,
                   offset);
 }
 
-// The lanes of a velocity solve's chunk that take a step: those whose -J v
-// is not exactly zero. A lane with -J v = 0 takes no step at all, which
-// Jolt's adding of the zero impulse K^-1 0 equals up to the sign of a zero
-// (and keeps a non-finite K^-1 from making a NaN of it); a chunk where no
-// lane steps skips the rest of the solve (docs/stepping.md, "Work skipped
-// where no world of a block needs it"). A chunk where every lane steps
-// takes the step without selects (where = nullptr below).
+// The lanes of a solve's chunk that take a step: those whose -J v (velocity
+// phase) or C (position phase) is not exactly zero. A lane with a zero takes
+// no step at all, which is what Jolt does up to the sign of a zero (it adds
+// the zero impulse K^-1 0 to the accumulated one) and keeps a non-finite
+// K^-1 from making a NaN of it; a chunk where no lane steps skips the rest
+// of the solve (docs/stepping.md, "Work skipped where no world of a block
+// needs it"). A chunk where every lane steps takes the step without selects
+// (where = nullptr below).
 struct SteppingLanes {
   LaneMask mask;
   bool every;
@@ -147,11 +148,14 @@ HWY_INLINE void AddLinearVelocityStep(BodyLanes& body, const Vec3& delta,
             body.linear_velocity, offset);
 }
 
-// x += lockT(dx) (Jolt's AddPositionStep).
-HWY_INLINE void AddPositionStep(BodyLanes& body, const Vec3& delta,
-                                std::size_t offset) {
-  StoreVec3(Add(LoadVec3(body.position, offset), LockTranslation(body, delta, offset)),
-            body.position, offset);
+// x += lockT(dx) (Jolt's AddPositionStep), in the lanes of *where only
+// (every lane for nullptr).
+template <class Where = std::nullptr_t>
+HWY_INLINE void AddPositionStep(BodyLanes& body, const Vec3& delta, std::size_t offset,
+                                Where where = nullptr) {
+  const Vec3 x = LoadVec3(body.position, offset);
+  StoreVec3(KeepUnless(where, Add(x, LockTranslation(body, delta, offset)), x), body.position,
+            offset);
 }
 
 // q <- quat(theta) * q in lanes with |theta| > 1e-6 (Jolt's AddRotationStep).

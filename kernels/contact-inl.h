@@ -336,7 +336,7 @@ HWY_INLINE LaneMask ContactSolveVelocityChunk(const BodyPair& bodies, ContactLan
   const LaneVec delta2 = hn::Sub(new2, old2);
   velocities.ApplyAxis(bodies, t1, manifold.tangent1_row, delta1, offset);
   velocities.ApplyAxis(bodies, t2, manifold.tangent2_row, delta2, offset);
-  LaneMask applied = hn::Or(hn::Ne(delta1, Zero()), hn::Ne(delta2, Zero()));
+  LaneMask applied = AnyComponentNonZero(delta1, delta2);
 
   // Angular friction about n: -J w = (w1 - w2).n.
   const Vec3 n = LoadVec3(manifold.normal, offset);

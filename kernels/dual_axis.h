@@ -41,6 +41,11 @@ struct DualAxisKernels {
   bool (*solve_position)(const BodyPair&, const DualAxisGeometry&,
                          const Vec3Lanes& separation, const DualAxisLanes&,
                          float baumgarte);
+  // The position phase's verb: calculate_properties + solve_position, except
+  // that a lane whose C is exactly zero is left exactly as it is.
+  bool (*recompute_and_solve_position)(const BodyPair&, const DualAxisGeometry&,
+                                       const Vec3Lanes& separation, DualAxisLanes&,
+                                       float baumgarte);
   void (*deactivate)(DualAxisLanes&, const LaneFlags& lanes);
   void (*is_active)(const DualAxisLanes&, LaneFlags& active);
 };

@@ -16,9 +16,9 @@ namespace HWY_NAMESPACE {
 
 const DualAxisKernels* GetDualAxisKernels() {
   static const DualAxisKernels kTable = {
-      MANYWORLDS_THIS_TARGET,  &DualAxisCalculateProperties, &DualAxisWarmStart,
-      &DualAxisSolveVelocity,      &DualAxisSolvePosition,       &DualAxisDeactivate,
-      &DualAxisIsActive,
+      MANYWORLDS_THIS_TARGET, &DualAxisCalculateProperties, &DualAxisWarmStart,
+      &DualAxisSolveVelocity, &DualAxisSolvePosition,       &DualAxisRecomputeAndSolvePosition,
+      &DualAxisDeactivate,    &DualAxisIsActive,
   };
   return &kTable;
 }

@@ -221,8 +221,7 @@ inline bool HingeRotationSolveVelocity(const BodyPair& bodies,
     const LaneVec s1 = Dot(LoadVec3(part.c2_x_a1, offset), relative_angular);
     // A lane whose axes turn together exactly (s = 0: every planar hinge)
     // takes no step (SteppingLanes).
-    const SteppingLanes turning =
-        LanesThatStep(hn::Or(hn::Ne(s0, Zero()), hn::Ne(s1, Zero())));
+    const SteppingLanes turning = LanesThatStep(AnyComponentNonZero(s0, s1));
     if (turning.none) return;
     LaneVec delta0, delta1;
     Multiply(LoadSym22(part.effective_mass, offset), s0, s1, delta0, delta1);
@@ -238,8 +237,7 @@ inline bool HingeRotationSolveVelocity(const BodyPair& bodies,
       Store(hn::IfThenElse(turning.mask, hn::Add(lambda1, delta1), lambda1), lambda.y, offset);
       hinge_rotation::ApplyImpulse<true>(bodies, part, delta0, delta1, offset, &turning.mask);
     }
-    applied |= AnyLane(
-        hn::And(turning.mask, hn::Or(hn::Ne(delta0, Zero()), hn::Ne(delta1, Zero()))));
+    applied |= AnyLane(hn::And(turning.mask, AnyComponentNonZero(delta0, delta1)));
   });
   return applied;
 }
@@ -257,7 +255,7 @@ inline bool HingeRotationSolvePosition(const BodyPair& bodies,
     const LaneVec c0 = Dot(a1, LoadVec3(part.b2, offset));
     const LaneVec c1 = Dot(a1, LoadVec3(part.c2, offset));
     // Jolt skips the step when C == 0; the select keeps those lanes exact.
-    const LaneMask has_error = hn::Or(hn::Ne(c0, Zero()), hn::Ne(c1, Zero()));
+    const LaneMask has_error = AnyComponentNonZero(c0, c1);
     LaneVec k_inv_c0, k_inv_c1;
     Multiply(LoadSym22(part.effective_mass, offset), c0, c1, k_inv_c0, k_inv_c1);
     const LaneVec lambda0 = hn::IfThenElseZero(has_error, hn::Mul(minus_beta, k_inv_c0));

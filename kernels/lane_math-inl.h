@@ -636,6 +636,9 @@ HWY_INLINE Mat33 ZeroMat33() {
 HWY_INLINE LaneMask AnyComponentNonZero(const Vec3& v) {
   return hn::Or(hn::Or(hn::Ne(v.x, Zero()), hn::Ne(v.y, Zero())), hn::Ne(v.z, Zero()));
 }
+HWY_INLINE LaneMask AnyComponentNonZero(LaneVec a, LaneVec b) {
+  return hn::Or(hn::Ne(a, Zero()), hn::Ne(b, Zero()));
+}
 HWY_INLINE LaneMask AnyComponentNonZero(const Sym33& s) {
   return hn::Or(AnyComponentNonZero(Vec3{s.xx, s.xy, s.xz}),
                 AnyComponentNonZero(Vec3{s.yy, s.yz, s.zz}));

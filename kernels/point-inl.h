@@ -72,7 +72,9 @@ HWY_INLINE void AddBodyToInverseEffectiveMass(LaneVec inv_mass, const Mat33& a,
 
 // Applies the impulse `lambda` (world, linear): body 1 gets -J^T lambda,
 // body 2 +J^T lambda. kVelocity = false makes it a position and rotation step.
-// `where` (velocity steps only): the lanes that take the step (AddVelocityStep).
+// `where`: the lanes whose velocities or positions are stored
+// (AddVelocityStep, AddPositionStep); a position step's caller also zeroes
+// lambda in the other lanes, whose rotation step of zero then keeps q.
 template <bool kVelocity, class Where = std::nullptr_t>
 HWY_INLINE void ApplyImpulse(const BodyPair& bodies, const PointLanes& part,
                              const Vec3& lambda, std::size_t offset,
@@ -84,7 +86,7 @@ HWY_INLINE void ApplyImpulse(const BodyPair& bodies, const PointLanes& part,
     if (kVelocity) {
       AddVelocityStep(*bodies.body1, linear, angular, offset, where);
     } else {
-      AddPositionStep(*bodies.body1, linear, offset);
+      AddPositionStep(*bodies.body1, linear, offset, where);
       AddRotationStep(*bodies.body1, angular, offset);
     }
   }
@@ -95,7 +97,7 @@ HWY_INLINE void ApplyImpulse(const BodyPair& bodies, const PointLanes& part,
     if (kVelocity) {
       AddVelocityStep(*bodies.body2, linear, angular, offset, where);
     } else {
-      AddPositionStep(*bodies.body2, linear, offset);
+      AddPositionStep(*bodies.body2, linear, offset, where);
       AddRotationStep(*bodies.body2, angular, offset);
     }
   }
@@ -105,38 +107,73 @@ HWY_INLINE Vec3 LoadLambda(const PointLanes& part, std::size_t offset) {
   return LoadVec3(part.persistent.total_lambda, offset);
 }
 
+// The lever arms at the bodies' current rotations.
+HWY_INLINE void LeverArms(const BodyPair& bodies, const PointGeometry& geometry,
+                          std::size_t offset, Vec3& r1, Vec3& r2) {
+  r1 = Rotate(LoadQuat(bodies.body1->rotation, offset), LoadVec3(geometry.r1_local, offset));
+  r2 = Rotate(LoadQuat(bodies.body2->rotation, offset), LoadVec3(geometry.r2_local, offset));
+}
+
+// C = p2 - p1 from the current centres of mass and the lever arms r1, r2.
+HWY_INLINE Vec3 Error(const BodyPair& bodies, const Vec3& r1, const Vec3& r2,
+                      std::size_t offset) {
+  const Vec3 x1 = LoadVec3(bodies.body1->position, offset);
+  const Vec3 x2 = LoadVec3(bodies.body2->position, offset);
+  return Sub(Add(Sub(x2, x1), r2), r1);
+}
+
+// Stores r1, r2, I^-1 [r]x and K^-1 (CalculateProperties of one chunk);
+// returns the lanes where K is invertible (the others get K^-1 = 0: Jolt's
+// Deactivate, whose clearing of the impulse is the caller's).
+HWY_INLINE LaneMask StoreProperties(const BodyPair& bodies, const Vec3& r1, const Vec3& r2,
+                                    PointLanes& part, std::size_t offset) {
+  StoreVec3(r1, part.r1, offset);
+  StoreVec3(r2, part.r2, offset);
+  // Non-dynamic bodies add nothing to K; their cached I^-1 [r]x stays zero
+  // so that 0 * cache is 0 in every later verb.
+  Sym33 k = ZeroSym33();
+  Mat33 a1 = ZeroMat33(), a2 = ZeroMat33();
+  if (bodies.motion1 == MotionType::kDynamic) {
+    a1 = InverseInertiaTimesCross(BodyInverseInertia(*bodies.body1, offset), r1);
+    AddBodyToInverseEffectiveMass(Load(bodies.body1->inv_mass, offset), a1, r1, k);
+  }
+  if (bodies.motion2 == MotionType::kDynamic) {
+    a2 = InverseInertiaTimesCross(BodyInverseInertia(*bodies.body2, offset), r2);
+    AddBodyToInverseEffectiveMass(Load(bodies.body2->inv_mass, offset), a2, r2, k);
+  }
+  StoreMat33(a1, part.inv_i1_r1_cross, offset);
+  StoreMat33(a2, part.inv_i2_r2_cross, offset);
+  LaneMask active;
+  StoreSym33(InverseSym33(k, active), part.effective_mass, offset);
+  return active;
+}
+
+// Baumgarte step L = -beta K^-1 C in the lanes of `with_error` (C != 0).
+// Jolt skips the others; here they take no step at all, not even a zero one
+// (SteppingLanes), and the select keeps them exact even if K^-1 is huge
+// (0 * inf would be NaN).
+HWY_INLINE void PositionStep(const BodyPair& bodies, const PointLanes& part, const Vec3& c,
+                             const SteppingLanes& with_error, LaneVec minus_beta,
+                             std::size_t offset) {
+  const Vec3 lambda = Scale(Multiply(LoadSym33(part.effective_mass, offset), c), minus_beta);
+  if (with_error.every) {
+    ApplyImpulse<false>(bodies, part, lambda, offset);
+  } else {
+    ApplyImpulse<false>(bodies, part, Select(with_error.mask, lambda, ZeroVec3()), offset,
+                        &with_error.mask);
+  }
+}
+
 }  // namespace point
 
 inline void PointCalculateProperties(const BodyPair& bodies,
                                      const PointGeometry& geometry, PointLanes& part) {
   ForEachChunk([&](std::size_t offset) {
-    const Vec3 r1 = Rotate(LoadQuat(bodies.body1->rotation, offset),
-                           LoadVec3(geometry.r1_local, offset));
-    const Vec3 r2 = Rotate(LoadQuat(bodies.body2->rotation, offset),
-                           LoadVec3(geometry.r2_local, offset));
-    StoreVec3(r1, part.r1, offset);
-    StoreVec3(r2, part.r2, offset);
-
-    // Non-dynamic bodies add nothing to K; their cached I^-1 [r]x stays zero
-    // so that 0 * cache is 0 in every later verb.
-    Sym33 k = ZeroSym33();
-    Mat33 a1 = ZeroMat33(), a2 = ZeroMat33();
-    if (bodies.motion1 == MotionType::kDynamic) {
-      a1 = point::InverseInertiaTimesCross(BodyInverseInertia(*bodies.body1, offset), r1);
-      point::AddBodyToInverseEffectiveMass(Load(bodies.body1->inv_mass, offset), a1, r1, k);
-    }
-    if (bodies.motion2 == MotionType::kDynamic) {
-      a2 = point::InverseInertiaTimesCross(BodyInverseInertia(*bodies.body2, offset), r2);
-      point::AddBodyToInverseEffectiveMass(Load(bodies.body2->inv_mass, offset), a2, r2, k);
-    }
-    StoreMat33(a1, part.inv_i1_r1_cross, offset);
-    StoreMat33(a2, part.inv_i2_r2_cross, offset);
-
-    LaneMask active;
-    StoreSym33(InverseSym33(k, active), part.effective_mass, offset);
+    Vec3 r1, r2;
+    point::LeverArms(bodies, geometry, offset, r1, r2);
+    const LaneMask active = point::StoreProperties(bodies, r1, r2, part, offset);
     // Singular lanes are deactivated, which also clears their impulse.
-    Vec3Lanes& lambda = part.persistent.total_lambda;
-    StoreVec3(Select(active, LoadVec3(lambda, offset), ZeroVec3()), lambda, offset);
+    ClearWhere(hn::Not(active), part.persistent.total_lambda, offset);
   });
 }
 
@@ -186,27 +223,62 @@ inline bool PointSolveVelocity(const BodyPair& bodies, PointLanes& part) {
   return applied;
 }
 
+namespace point {
+
+// One position pass: C from the lever arms of the last CalculateProperties,
+// or with kRecompute from those at the current rotations (`geometry`), and
+// the step in every chunk where some lane has an error, with kRecompute the
+// properties recomputed there first and the impulses of singular lanes with
+// an error cleared.
+template <bool kRecompute, class Part>
+HWY_INLINE bool PositionPass(const BodyPair& bodies, const PointGeometry* geometry, Part& part,
+                             float baumgarte) {
+  const LaneVec minus_beta = Splat(-baumgarte);
+  bool applied = false;
+  ForEachChunk([&](std::size_t offset) {
+    Vec3 r1, r2;
+    if constexpr (kRecompute) {
+      LeverArms(bodies, *geometry, offset, r1, r2);
+    } else {
+      r1 = LoadVec3(part.r1, offset);
+      r2 = LoadVec3(part.r2, offset);
+    }
+    const Vec3 c = Error(bodies, r1, r2, offset);
+    const SteppingLanes with_error = LanesThatStep(AnyComponentNonZero(c));
+    if (with_error.none) return;
+    if constexpr (kRecompute) {
+      const LaneMask active = StoreProperties(bodies, r1, r2, part, offset);
+      ClearWhere(hn::AndNot(active, with_error.mask), part.persistent.total_lambda, offset);
+    }
+    PositionStep(bodies, part, c, with_error, minus_beta, offset);
+    applied = true;
+  });
+  return applied;
+}
+
+}  // namespace point
+
 // Baumgarte step towards p1 = p2 with the lever arms and K^-1 of the last
 // CalculateProperties (callers recompute them first). Returns true if any
 // lane had a non-zero error.
 inline bool PointSolvePosition(const BodyPair& bodies, const PointLanes& part,
                                float baumgarte) {
-  const LaneVec minus_beta = Splat(-baumgarte);
-  bool applied = false;
-  ForEachChunk([&](std::size_t offset) {
-    const Vec3 x1 = LoadVec3(bodies.body1->position, offset);
-    const Vec3 x2 = LoadVec3(bodies.body2->position, offset);
-    const Vec3 c = Sub(Add(Sub(x2, x1), LoadVec3(part.r2, offset)),
-                       LoadVec3(part.r1, offset));
-    // Jolt skips the step when C == 0; the select keeps those lanes exact even
-    // if K^-1 is huge (0 * inf would be NaN).
-    const LaneMask has_error = AnyComponentNonZero(c);
-    const Vec3 k_inv_c = Multiply(LoadSym33(part.effective_mass, offset), c);
-    const Vec3 lambda = Select(has_error, Scale(k_inv_c, minus_beta), ZeroVec3());
-    point::ApplyImpulse<false>(bodies, part, lambda, offset);
-    applied |= AnyLane(has_error);
-  });
-  return applied;
+  return point::PositionPass<false>(bodies, nullptr, part, baumgarte);
+}
+
+// The position phase's verb: the properties at the current rotations, then
+// one Baumgarte step. A lane whose C is exactly zero takes no step and is
+// left exactly as it is (its impulse is not cleared even if K has become
+// singular since the setup, where Jolt's recompute would clear it); where
+// that holds in every lane of a chunk (anchors at the centres of bodies that
+// turn about them: gears, pinions, wheels on axles) the properties are not
+// computed, and the part's cached properties keep their setup values, which
+// nothing reads before the next setup. Returns true if any lane had a
+// non-zero error.
+inline bool PointRecomputeAndSolvePosition(const BodyPair& bodies,
+                                           const PointGeometry& geometry, PointLanes& part,
+                                           float baumgarte) {
+  return point::PositionPass<true>(bodies, &geometry, part, baumgarte);
 }
 
 // Jolt's Deactivate of the flagged lanes: K^-1 = 0 and accumulated impulse = 0.

@@ -39,6 +39,10 @@ struct PointKernels {
   // C from the current centres of mass and the lever arms of the last
   // calculate_properties (callers recompute them first).
   bool (*solve_position)(const BodyPair&, const PointLanes&, float baumgarte);
+  // The position phase's verb: calculate_properties + solve_position, except
+  // that a lane whose C is exactly zero is left exactly as it is.
+  bool (*recompute_and_solve_position)(const BodyPair&, const PointGeometry&, PointLanes&,
+                                       float baumgarte);
   void (*deactivate)(PointLanes&, const LaneFlags& lanes);
   void (*is_active)(const PointLanes&, LaneFlags& active);
 };

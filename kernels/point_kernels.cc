@@ -16,9 +16,9 @@ namespace HWY_NAMESPACE {
 
 const PointKernels* GetPointKernels() {
   static const PointKernels kTable = {
-      MANYWORLDS_THIS_TARGET, &PointCalculateProperties, &PointWarmStart,
-      &PointSolveVelocity,    &PointSolvePosition,       &PointDeactivate,
-      &PointIsActive,
+      MANYWORLDS_THIS_TARGET, &PointCalculateProperties,       &PointWarmStart,
+      &PointSolveVelocity,    &PointSolvePosition,             &PointRecomputeAndSolvePosition,
+      &PointDeactivate,       &PointIsActive,
   };
   return &kTable;
 }

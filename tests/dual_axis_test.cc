@@ -282,6 +282,57 @@ TEST_P(DualAxisTest, DeactivatedAndSingularLanesStayFiniteAndApplyNothing) {
       "inactive lane");
 }
 
+// The position phase's verb against calculate_properties + solve_position,
+// with every fourth lane put on its rail (separation 0, so C == 0 exactly)
+// with immovable bodies (K singular since the setup) and every lane holding
+// an impulse: a lane with an error gets the same bits either way (a
+// singular one has its impulse cleared, as Jolt's recompute clears it); a
+// lane on its rail is left exactly as it is, impulse included
+// (docs/stepping.md, "Work skipped where no world of a block needs it").
+TEST_P(DualAxisTest, PositionVerbLeavesLanesOnTheRailAsTheyAre) {
+  CalculateProperties();
+  const auto on_rail = [](std::size_t w) { return w % 4 == 1; };
+  for (std::size_t w = 0; w < worlds(); ++w) {
+    if (on_rail(w)) {
+      SetLaneVec3((*separation_)[Block(w)], Lane(w), Vec3d::Zero());
+      for (std::size_t body = 0; body < 2; ++body) {
+        BodyState state = bodies_->Get(w, body);
+        state.inv_mass = 0.0f;
+        state.inv_inertia_diagonal = {0.0f, 0.0f, 0.0f};
+        bodies_->Set(w, body, state);
+      }
+    }
+    SetTotalLambda(*parts_, w, {0.5f, float(w) + 1.0f});
+  }
+  const BodyBlocks start_bodies = *bodies_;
+  const PartBlocks<DualAxisLanes> start_parts = *parts_;
+  for (std::size_t block = 0; block < blocks(); ++block) {
+    kernels_->calculate_properties(Pair(block), (*geometry_)[block], (*parts_)[block]);
+    kernels_->solve_position(Pair(block), (*geometry_)[block], (*separation_)[block],
+                             (*parts_)[block], 0.2f);
+  }
+  const BodyBlocks separate_bodies = *bodies_;
+  const PartBlocks<DualAxisLanes> separate_parts = *parts_;
+  *bodies_ = start_bodies;
+  *parts_ = start_parts;
+  for (std::size_t block = 0; block < blocks(); ++block) {
+    kernels_->recompute_and_solve_position(Pair(block), (*geometry_)[block],
+                                           (*separation_)[block], (*parts_)[block], 0.2f);
+  }
+  ExpectBodiesUnchanged(start_bodies, [&](std::size_t w, std::size_t) { return on_rail(w); },
+                        "lane on its rail (C == 0)");
+  ExpectBodiesUnchanged(separate_bodies, [&](std::size_t w, std::size_t) { return !on_rail(w); },
+                        "lane with an error, against calculate_properties + solve_position");
+  for (std::size_t w = 0; w < worlds(); ++w) {
+    const auto got = GetTotalLambda(*parts_, w);
+    const auto want = GetTotalLambda(on_rail(w) ? start_parts : separate_parts, w);
+    EXPECT_TRUE(BitEqual(&got, &want, sizeof got)) << "impulse of world " << w;
+    if (on_rail(w)) {
+      EXPECT_NE(got[1], 0.0f) << "world " << w << " on its rail lost its impulse";
+    }
+  }
+}
+
 TEST_P(DualAxisTest, GetSetSaveRestoreOfAccumulatedImpulse) {
   CalculateProperties();
   for (std::size_t w = 0; w < worlds(); ++w) {

@@ -303,6 +303,53 @@ TEST_P(PointTest, PositionSolveAtRestMovesNothing) {
       "lane at rest (C == 0)");
 }
 
+// The position phase's verb against calculate_properties + solve_position,
+// after the bodies of the lanes at rest (C == 0 exactly) have become
+// immovable since the setup (K singular now) and every lane holds an
+// impulse: a lane with an error gets the same bits either way (a singular
+// one has its impulse cleared, as Jolt's recompute clears it); a lane at
+// rest is left exactly as it is, impulse included (docs/stepping.md, "Work
+// skipped where no world of a block needs it").
+TEST_P(PointTest, PositionVerbLeavesLanesAtRestAsTheyAre) {
+  CalculateProperties();
+  const auto at_rest = [](std::size_t w) { return KindOfWorld(w) == LaneKind::kAtRest; };
+  for (std::size_t w = 0; w < worlds(); ++w) {
+    for (std::size_t body = 0; body < 2 && at_rest(w); ++body) {
+      BodyState state = bodies_->Get(w, body);
+      state.inv_mass = 0.0f;
+      state.inv_inertia_diagonal = {0.0f, 0.0f, 0.0f};
+      bodies_->Set(w, body, state);
+    }
+    SetTotalLambda(*parts_, w, {0.5f, -0.25f, float(w) + 1.0f});
+  }
+  const BodyBlocks start_bodies = *bodies_;
+  const PartBlocks<PointLanes> start_parts = *parts_;
+  for (std::size_t block = 0; block < blocks(); ++block) {
+    kernels_->calculate_properties(Pair(block), (*geometry_)[block], (*parts_)[block]);
+    kernels_->solve_position(Pair(block), (*parts_)[block], 0.2f);
+  }
+  const BodyBlocks separate_bodies = *bodies_;
+  const PartBlocks<PointLanes> separate_parts = *parts_;
+  *bodies_ = start_bodies;
+  *parts_ = start_parts;
+  for (std::size_t block = 0; block < blocks(); ++block) {
+    kernels_->recompute_and_solve_position(Pair(block), (*geometry_)[block], (*parts_)[block],
+                                           0.2f);
+  }
+  ExpectBodiesUnchanged(start_bodies, [&](std::size_t w, std::size_t) { return at_rest(w); },
+                        "lane at rest (C == 0)");
+  ExpectBodiesUnchanged(separate_bodies, [&](std::size_t w, std::size_t) { return !at_rest(w); },
+                        "lane with an error, against calculate_properties + solve_position");
+  for (std::size_t w = 0; w < worlds(); ++w) {
+    const auto got = GetTotalLambda(*parts_, w);
+    const auto want = GetTotalLambda(at_rest(w) ? start_parts : separate_parts, w);
+    EXPECT_TRUE(BitEqual(&got, &want, sizeof got)) << "impulse of world " << w;
+    if (at_rest(w)) {
+      EXPECT_NE(got[2], 0.0f) << "world " << w << " at rest lost its impulse";
+    }
+  }
+}
+
 TEST_P(PointTest, GetSetSaveRestoreOfAccumulatedImpulse) {
   CalculateProperties();
   for (std::size_t w = 0; w < worlds(); ++w) {
