@@ -228,15 +228,9 @@ inline bool HingeRotationSolveVelocity(const BodyPair& bodies,
 
     Vec2Lanes& lambda = part.persistent.total_lambda;
     const LaneVec lambda0 = Load(lambda.x, offset), lambda1 = Load(lambda.y, offset);
-    if (turning.every) {
-      Store(hn::Add(lambda0, delta0), lambda.x, offset);
-      Store(hn::Add(lambda1, delta1), lambda.y, offset);
-      hinge_rotation::ApplyImpulse<true>(bodies, part, delta0, delta1, offset);
-    } else {
-      Store(hn::IfThenElse(turning.mask, hn::Add(lambda0, delta0), lambda0), lambda.x, offset);
-      Store(hn::IfThenElse(turning.mask, hn::Add(lambda1, delta1), lambda1), lambda.y, offset);
-      hinge_rotation::ApplyImpulse<true>(bodies, part, delta0, delta1, offset, &turning.mask);
-    }
+    Store(hn::IfThenElse(turning.mask, hn::Add(lambda0, delta0), lambda0), lambda.x, offset);
+    Store(hn::IfThenElse(turning.mask, hn::Add(lambda1, delta1), lambda1), lambda.y, offset);
+    hinge_rotation::ApplyImpulse<true>(bodies, part, delta0, delta1, offset, &turning.mask);
     applied |= AnyLane(hn::And(turning.mask, AnyComponentNonZero(delta0, delta1)));
   });
   return applied;
