@@ -114,10 +114,6 @@ HWY_INLINE SteppingLanes LanesThatStep(LaneMask non_zero) {
 }
 
 // `stepped` in the lanes of *where (every lane for nullptr), `kept` elsewhere.
-HWY_INLINE LaneVec KeepUnless(std::nullptr_t, LaneVec stepped, LaneVec) { return stepped; }
-HWY_INLINE LaneVec KeepUnless(const LaneMask* where, LaneVec stepped, LaneVec kept) {
-  return hn::IfThenElse(*where, stepped, kept);
-}
 HWY_INLINE Vec3 KeepUnless(std::nullptr_t, const Vec3& stepped, const Vec3&) { return stepped; }
 HWY_INLINE Vec3 KeepUnless(const LaneMask* where, const Vec3& stepped, const Vec3& kept) {
   return Select(*where, stepped, kept);
