@@ -355,16 +355,21 @@ bool StepBlockProfiled(const StepPlan& plan, std::byte* block, const std::byte* 
   return StepBlockWith(plan, block, next_block, params, clock);
 }
 
+// Array by array, each array's chunks in turn, so that every cache line of
+// the block is loaded and written once: chunk by chunk over all arrays, an
+// 8-lane target walked the block twice, and a block larger than L1 (ragdoll
+// 103 KB, chain16 82 KB) came from L2 both times (docs/benchmarks.md, "RL
+// calls"). The mask is recomputed per array from `take`, which stays in L1.
 void ResetLanesOfBlock(std::byte* block, const std::byte* initial, std::size_t arrays,
                        const LaneArray& take) {
   LaneArray* out = reinterpret_cast<LaneArray*>(block);
   const LaneArray* from = reinterpret_cast<const LaneArray*>(initial);
-  ForEachChunk([&](std::size_t offset) {
-    const LaneMask reset = hn::Ne(Load(take, offset), Zero());
-    for (std::size_t i = 0; i < arrays; ++i) {
+  for (std::size_t i = 0; i < arrays; ++i) {
+    ForEachChunk([&](std::size_t offset) {
+      const LaneMask reset = hn::Ne(Load(take, offset), Zero());
       Store(hn::IfThenElse(reset, Load(from[i], offset), Load(out[i], offset)), out[i], offset);
-    }
-  });
+    });
+  }
 }
 
 const StepKernels* GetStepKernels() {

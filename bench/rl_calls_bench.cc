@@ -1,7 +1,7 @@
 // The calls an RL loop makes around Batch::Step, per world, in one run so
 // their costs read as ratios to the step (docs/benchmarks.md, "RL calls"):
-// Step, GetState, GetJointCoordinates of every constraint, and Snapshot /
-// Restore, for cartpole, chain16 and ragdoll at 4096 worlds on one thread;
+// Step, GetState, GetJointCoordinates of every constraint, Reset of 5 % of
+// the worlds, and Snapshot / Restore, for cartpole, chain16 and ragdoll at 4096 worlds on one thread;
 // and a whole RL loop (the scene's actions, Step, a reset of 5 % of the
 // worlds, the state read) against Step with the same actions: once as
 // separate calls, once as one Step(settings, io).
@@ -23,7 +23,7 @@ namespace {
 constexpr std::size_t kWorlds = 4096;
 
 enum class Call {
-  kStep, kGetState, kJointCoordinates, kSnapshot, kRestore,
+  kStep, kGetState, kJointCoordinates, kReset, kSnapshot, kRestore,
   kActStep, kLoopSeparate, kLoopFused
 };
 const char* CallName(Call call) {
@@ -31,6 +31,7 @@ const char* CallName(Call call) {
     case Call::kStep: return "step";
     case Call::kGetState: return "get_state";
     case Call::kJointCoordinates: return "joint_coordinates";
+    case Call::kReset: return "reset_5_percent";
     case Call::kSnapshot: return "snapshot";
     case Call::kRestore: return "restore";
     case Call::kActStep: return "actions_step";
@@ -109,6 +110,7 @@ void Bench(benchmark::State& state, const std::string& id, Call call) {
       case Call::kStep: batch.Step(SceneStepSettings(id)); break;
       case Call::kGetState: batch.GetState(states); break;
       case Call::kJointCoordinates: batch.GetJointCoordinates(joints); break;
+      case Call::kReset: batch.Reset(reset); break;
       case Call::kSnapshot: benchmark::DoNotOptimize(batch.Snapshot()); break;
       case Call::kRestore: batch.Restore(saved); break;
       case Call::kActStep:
@@ -142,7 +144,7 @@ void Bench(benchmark::State& state, const std::string& id, Call call) {
 void RegisterAll() {
   for (const char* id : {"cartpole", "chain16", "ragdoll"}) {
     for (const Call call :
-         {Call::kStep, Call::kGetState, Call::kJointCoordinates, Call::kSnapshot,
+         {Call::kStep, Call::kGetState, Call::kJointCoordinates, Call::kReset, Call::kSnapshot,
           Call::kRestore, Call::kActStep, Call::kLoopSeparate, Call::kLoopFused}) {
       const std::string name = std::string(id) + "/" + CallName(call);
       benchmark::RegisterBenchmark(name.c_str(), [id, call](benchmark::State& state) {
