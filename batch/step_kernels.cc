@@ -356,9 +356,10 @@ bool StepBlockProfiled(const StepPlan& plan, std::byte* block, const std::byte* 
 }
 
 // Array by array, each array's chunks in turn, so that every cache line of
-// the block is loaded and written once: chunk by chunk over all arrays, an
-// 8-lane target walked the block twice, and a block larger than L1 (ragdoll
-// 103 KB, chain16 82 KB) came from L2 both times (docs/benchmarks.md, "RL
+// the block is loaded and written once: chunk by chunk over all arrays, a
+// target with vectors narrower than 16 lanes walked the block once per chunk
+// (AVX2 twice, SSE4 and NEON four times), and a block larger than L1 (ragdoll
+// 103 KB, chain16 82 KB) came from L2 each time (docs/benchmarks.md, "RL
 // calls"). The mask is recomputed per array from `take`, which stays in L1.
 void ResetLanesOfBlock(std::byte* block, const std::byte* initial, std::size_t arrays,
                        const LaneArray& take) {

@@ -1,7 +1,8 @@
 // The calls an RL loop makes around Batch::Step, per world, in one run so
 // their costs read as ratios to the step (docs/benchmarks.md, "RL calls"):
 // Step, GetState, GetJointCoordinates of every constraint, Reset of 5 % of
-// the worlds, and Snapshot / Restore, for cartpole, chain16 and ragdoll at 4096 worlds on one thread;
+// the worlds, and Snapshot / Restore, for cartpole, chain16 and ragdoll at
+// 4096 worlds on one thread;
 // and a whole RL loop (the scene's actions, Step, a reset of 5 % of the
 // worlds, the state read) against Step with the same actions: once as
 // separate calls, once as one Step(settings, io).
