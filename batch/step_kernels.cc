@@ -360,14 +360,17 @@ bool StepBlockProfiled(const StepPlan& plan, std::byte* block, const std::byte* 
 // target with vectors narrower than 16 lanes walked the block once per chunk
 // (AVX2 twice, SSE4 and NEON four times), and a block larger than L1 (ragdoll
 // 103 KB, chain16 82 KB) came from L2 each time (docs/benchmarks.md, "RL
-// calls"). The mask is recomputed per array from `take`, which stays in L1.
+// calls"). `take` is copied first: the stores into the block could alias the
+// caller's array, and a local one lets the compiler keep each chunk's mask in
+// a register across the arrays instead of reloading it after every store.
 void ResetLanesOfBlock(std::byte* block, const std::byte* initial, std::size_t arrays,
                        const LaneArray& take) {
   LaneArray* out = reinterpret_cast<LaneArray*>(block);
   const LaneArray* from = reinterpret_cast<const LaneArray*>(initial);
+  const LaneArray lanes = take;
   for (std::size_t i = 0; i < arrays; ++i) {
     ForEachChunk([&](std::size_t offset) {
-      const LaneMask reset = hn::Ne(Load(take, offset), Zero());
+      const LaneMask reset = hn::Ne(Load(lanes, offset), Zero());
       Store(hn::IfThenElse(reset, Load(from[i], offset), Load(out[i], offset)), out[i], offset);
     });
   }
