@@ -88,54 +88,12 @@ class World {
   // body or helper indices that do not fit, for a gear or rack-and-pinion with a
   // static body, for a plane shape on a body that is not static and for a pair
   // of shapes that collide but is not supported (naming both bodies).
-  explicit World(const Scene& scene) {
-    for (const BodySettings& settings : scene.bodies()) {
-      bodies_.push_back(MakeBody<T>(settings));
-      motion_.push_back(MakeBodyMotionSettings<T>(settings));
-    }
-    const auto& constraints = scene.constraints();
-    for (std::size_t index = 0; index < constraints.size(); ++index) {
-      constraints_.push_back(std::visit(
-          [&](const auto& settings) { return MakeConstraint(settings, index); },
-          constraints[index]));
-    }
-    for (std::size_t index = 0; index < constraints_.size(); ++index) CheckHelpers(index);
-    MakeContacts(scene);
-  }
+  explicit World(const Scene& scene);
 
   // One step of settings.delta_time (see the header comment). Throws
   // std::invalid_argument for bad settings (contact settings negative or not
   // finite included).
-  void Step(const StepSettings& settings) {
-    if (!(settings.delta_time > 0.0f) || settings.substeps < 1 ||
-        settings.velocity_iterations < 0 || settings.position_iterations < 0) {
-      throw std::invalid_argument("reference::World::Step: invalid step settings");
-    }
-    for (const float value :
-         {settings.speculative_contact_distance, settings.penetration_slop,
-          settings.max_penetration_distance, settings.min_velocity_for_restitution}) {
-      if (!(std::isfinite(value) && value >= 0.0f)) {
-        throw std::invalid_argument("reference::World::Step: invalid contact settings");
-      }
-    }
-    const T step_dt = T(settings.delta_time) / T(settings.substeps);
-    const T first_ratio = settings.warm_start && previous_step_dt_ > T(0)
-                              ? step_dt / previous_step_dt_
-                              : T(0);
-    // The exact solve's stiffness scales the last impulses by dt / dt_prev
-    // (they acted over the previous substep), whatever warm_start says.
-    const T first_stiffness_ratio =
-        previous_step_dt_ > T(0) ? step_dt / previous_step_dt_ : T(1);
-    previous_step_dt_ = step_dt;
-    for (int substep = 0; substep < settings.substeps; ++substep) {
-      StepOnce(settings, step_dt, substep == 0 ? first_ratio : T(1),
-               substep == 0 ? first_stiffness_ratio : T(1));
-    }
-    for (BodyMotionSettings<T>& motion : motion_) {
-      motion.force.setZero();
-      motion.torque.setZero();
-    }
-  }
+  void Step(const StepSettings& settings);
 
   // ---- actions: world-space force / torque through the COM for the next Step.
   void SetForce(std::size_t body, const Vec3<T>& force) { motion_.at(body).force = force; }
@@ -680,5 +638,61 @@ class World {
   // switch solvers between steps part ways (the tests never switch).
   std::vector<Vec3<T>> exact_impulses_;
 };
+
+// Defined out of the class so that `extern template` below keeps every
+// translation unit that steps a World<float> or World<double> from compiling
+// the whole stepper again (about 35 s each with Eigen at -O2): they are
+// compiled once, in reference/world_float.cc and reference/world_double.cc.
+// Other scalars (tests/flop_count_test.cc's counted float) instantiate here.
+template <class T>
+World<T>::World(const Scene& scene) {
+  for (const BodySettings& settings : scene.bodies()) {
+    bodies_.push_back(MakeBody<T>(settings));
+    motion_.push_back(MakeBodyMotionSettings<T>(settings));
+  }
+  const auto& constraints = scene.constraints();
+  for (std::size_t index = 0; index < constraints.size(); ++index) {
+    constraints_.push_back(std::visit(
+        [&](const auto& settings) { return MakeConstraint(settings, index); },
+        constraints[index]));
+  }
+  for (std::size_t index = 0; index < constraints_.size(); ++index) CheckHelpers(index);
+  MakeContacts(scene);
+}
+
+template <class T>
+void World<T>::Step(const StepSettings& settings) {
+  if (!(settings.delta_time > 0.0f) || settings.substeps < 1 ||
+      settings.velocity_iterations < 0 || settings.position_iterations < 0) {
+    throw std::invalid_argument("reference::World::Step: invalid step settings");
+  }
+  for (const float value :
+       {settings.speculative_contact_distance, settings.penetration_slop,
+        settings.max_penetration_distance, settings.min_velocity_for_restitution}) {
+    if (!(std::isfinite(value) && value >= 0.0f)) {
+      throw std::invalid_argument("reference::World::Step: invalid contact settings");
+    }
+  }
+  const T step_dt = T(settings.delta_time) / T(settings.substeps);
+  const T first_ratio = settings.warm_start && previous_step_dt_ > T(0)
+                            ? step_dt / previous_step_dt_
+                            : T(0);
+  // The exact solve's stiffness scales the last impulses by dt / dt_prev
+  // (they acted over the previous substep), whatever warm_start says.
+  const T first_stiffness_ratio =
+      previous_step_dt_ > T(0) ? step_dt / previous_step_dt_ : T(1);
+  previous_step_dt_ = step_dt;
+  for (int substep = 0; substep < settings.substeps; ++substep) {
+    StepOnce(settings, step_dt, substep == 0 ? first_ratio : T(1),
+             substep == 0 ? first_stiffness_ratio : T(1));
+  }
+  for (BodyMotionSettings<T>& motion : motion_) {
+    motion.force.setZero();
+    motion.torque.setZero();
+  }
+}
+
+extern template class World<float>;
+extern template class World<double>;
 
 }  // namespace manyworlds::reference

@@ -182,7 +182,10 @@ SweepConfig ConfigOf(int argc, char** argv) {
     throw UsageError("--solver = '" + solver + "': expected 'gauss-seidel' or 'exact'");
   }
   config.out = options.Text("--out", "sweep");
-  for (int i = 0; i < argc; ++i) config.command_line += (i ? " " : "") + std::string(argv[i]);
+  for (int i = 0; i < argc; ++i) {
+    if (i != 0) config.command_line += ' ';
+    config.command_line += argv[i];
+  }
   return config;
 }
 

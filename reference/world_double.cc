@@ -1,0 +1,5 @@
+// The reference stepper for double, compiled once here instead of in every test
+// and tool that steps one (reference/world.h declares it extern).
+#include "reference/world.h"
+
+template class manyworlds::reference::World<double>;
