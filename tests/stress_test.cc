@@ -24,6 +24,9 @@
 //    by float rounding only: kEnergyRounding x S, S the largest kinetic or
 //    potential energy seen (rounding of each body's state, summed over up to
 //    64 bodies). The motor may add the kinetic energy of its target speed.
+//    Torn joints are the exception (MassRangeHangingIsNotHeldByJoltsSolver):
+//    a position step that pulls links hundreds of metres back together can
+//    raise them, so that test has its own, measured bound.
 //  - joints: Batch::MaxConstraintError (m or rad) at every step after the
 //    first second. Chains: kChainJointError, a tenth of a 0.5 m link, "the
 //    chain holds together". Single joints: kRestError.
@@ -336,18 +339,31 @@ TEST(StressScenes, EveryStressSceneHasAnExpectation) {
 // scene falls apart whatever the substeps or iterations (docs/stability.md;
 // StressRemedyTest holds it after LimitMassRange). Asserted as the documented
 // failure, so that a change that fixes it updates the docs: the world stays
-// finite, its energy does not grow, and the 1e6 kg link falls nearly freely
-// (the joint error after 10 s is over 100 m; free fall from rest covers 490 m)
-// with 1, 8 and 32 substeps.
+// finite and the 1e6 kg link falls nearly freely (the joint error after 10 s
+// is over 100 m; free fall from rest covers 490 m) with 1, 8, 20 and 32
+// substeps.
+// Energy: with the joints torn, the position steps that pull the links back
+// together feed the heavy links' swing, so E is not bounded by rounding as
+// in the other scenes. Measured over 10 s at 1, 2, 4, 8, 12, 16, 20, 24, 28,
+// 32, 40, 48 and 64 substeps: E never exceeded its start at ten of them, and
+// rose by 1.2e-4 S at 20, 2.0e-4 S at 40 and 2.8e-5 S at 64 (S as in
+// ExpectBounded). kTornChainEnergyGrowth is 5x the largest, so this test
+// follows the scene rather than the rounding of one trajectory (which any
+// change of the step's rounding moves); 20 is among the counts it runs.
+constexpr double kTornChainEnergyGrowth = 1e-3;
+
 TEST(StressScenes, MassRangeHangingIsNotHeldByJoltsSolver) {
   const Expectation& x = kExpectations[19];
   ASSERT_STREQ(x.id, "mass-range-hanging");
-  for (const int substeps : {1, 8, 32}) {
+  for (const int substeps : {1, 8, 20, 32}) {
     StepSettings settings = SceneStepSettings(x.id);
     settings.substeps = substeps;
     const Figures f = RunScene(x.id, settings);
     ReportFigures(x.id, "substeps" + std::to_string(substeps), f);
-    ExpectBounded(x, f, kInfinity);
+    ASSERT_TRUE(f.finite) << "substeps " << substeps;
+    EXPECT_TRUE(f.worlds_identical) << "substeps " << substeps;
+    EXPECT_LE(f.energy_max - f.energy_start, kTornChainEnergyGrowth * f.energy_scale)
+        << "substeps " << substeps;
     EXPECT_GT(f.joint_error_max, 100.0) << "substeps " << substeps;
   }
 }
