@@ -114,7 +114,36 @@ void BindState(py::class_<Batch>& cls) {
                                                 {Worlds(batch), Bodies(batch),
                                                  static_cast<py::ssize_t>(StateFieldSize(field))}));
           },
-          py::arg("field"), py::arg("values"));
+          py::arg("field"), py::arg("values"))
+      .def_property_readonly("solver_state_size", &Batch::SolverStateSize,
+                             "Floats of one world's solver state.")
+      .def(
+          "get_solver_state",
+          [](const Batch& batch, std::int64_t world, py::object out) {
+            const std::size_t w = CheckedIndex(world, batch.world_count(), "world");
+            const Shape shape{static_cast<py::ssize_t>(batch.SolverStateSize())};
+            py::array result = OutputArray(out, shape);
+            batch.GetSolverState(w, OutputArgument<float>(result, "out", shape));
+            return result;
+          },
+          py::arg("world"), py::arg("out") = py::none(),
+          "What one world's constraints and contacts carry from one step to the next besides "
+          "its bodies: float32 [solver_state_size] of accumulated impulses, hinge turns, "
+          "remembered directions and kept contact points (layout: docs/stepping.md, "
+          "\"Solver state of one world\").")
+      .def(
+          "set_solver_state",
+          [](Batch& batch, std::int64_t world, py::handle values) {
+            const std::size_t w = CheckedIndex(world, batch.world_count(), "world");
+            batch.SetSolverState(
+                w, ArrayArgument<float>(values, "values",
+                                        {static_cast<py::ssize_t>(batch.SolverStateSize())}));
+          },
+          py::arg("world"), py::arg("values"),
+          "Writes one world's solver state (as get_solver_state gives it); ValueError naming "
+          "the constraint or contact, writing nothing, for a value that is not finite, a row "
+          "the constraint does not have or a bad contact point. With set_state, a world "
+          "continues exactly as the world the two came from.");
 }
 
 void BindJointCoordinates(py::class_<Batch>& cls) {

@@ -23,6 +23,7 @@
 #include "reference/body.h"
 #include "reference/math.h"
 #include "reference/point_part.h"
+#include "reference/solver_state.h"
 #include "reference/world_setup.h"
 
 namespace manyworlds::reference {
@@ -78,6 +79,19 @@ class ConeConstraint {
   }
 
   const Vec3<T>& rotation_axis() const { return rotation_axis_; }
+
+  // Solver state (reference/solver_state.h), in the batch's order
+  // (docs/stepping.md, "Solver state").
+  void SaveSolverState(SolverStateWriter<T>& out) const {
+    out(point_.SaveState());
+    out(angle_.SaveState());
+    out(rotation_axis_);
+  }
+  void RestoreSolverState(SolverStateReader<T>& in) {
+    point_.RestoreState(in.Vector3());
+    angle_.RestoreState(in.Scalar());
+    rotation_axis_ = in.Vector3();
+  }
 
  private:
   void CalculateRotationProperties(const Body<T>& body1, const Body<T>& body2) {

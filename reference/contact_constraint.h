@@ -61,6 +61,7 @@
 #include "reference/box_contact_points.h"
 #include "reference/contact_points.h"
 #include "reference/math.h"
+#include "reference/solver_state.h"
 #include "reference/world_setup.h"
 
 namespace manyworlds::reference {
@@ -317,6 +318,43 @@ class ContactConstraint {
   }
 
   // ---- read-only views (this substep's manifold), for tests
+  // Solver state (reference/solver_state.h), in the batch's layout: the
+  // friction impulses (t1, t2, angular), then kMaxContactPoints times: 1 for a
+  // kept point (else 0 and the rest of the point 0), its local points on body
+  // 1 and 2 and its normal impulse. The batch keeps points in fixed slots; here
+  // they are compacted in slot order, which keeps the first match of the next
+  // setup's point matching the same.
+  void SaveSolverState(SolverStateWriter<T>& out) const {
+    out(tangent1_.lambda);
+    out(tangent2_.lambda);
+    out(angular_.lambda);
+    for (int i = 0; i < kMaxContactPoints; ++i) {
+      const bool kept = i < count_;
+      out(kept ? T(1) : T(0));
+      out(kept ? local1_[i] : Vec3<T>(Vec3<T>::Zero()));
+      out(kept ? local2_[i] : Vec3<T>(Vec3<T>::Zero()));
+      out(kept ? normal_[i].lambda : T(0));
+    }
+  }
+  void RestoreSolverState(SolverStateReader<T>& in) {
+    tangent1_.lambda = in.Scalar();
+    tangent2_.lambda = in.Scalar();
+    angular_.lambda = in.Scalar();
+    count_ = 0;
+    for (int i = 0; i < kMaxContactPoints; ++i) {
+      const bool kept = in.Scalar() != T(0);
+      const Vec3<T> local1 = in.Vector3();
+      const Vec3<T> local2 = in.Vector3();
+      const T lambda = in.Scalar();
+      if (!kept) continue;
+      local1_[count_] = local1;
+      local2_[count_] = local2;
+      normal_[count_].lambda = lambda;
+      ++count_;
+    }
+    for (int i = count_; i < kMaxContactPoints; ++i) normal_[i].lambda = T(0);
+  }
+
   bool Exists() const { return count_ > 0; }
   int PointCount() const { return count_; }
   const Vec3<T>& Normal() const { return normal_direction_; }  // body 1 to body 2; 0 if none

@@ -32,6 +32,7 @@
 #include "reference/axis_part.h"
 #include "reference/body.h"
 #include "reference/math.h"
+#include "reference/solver_state.h"
 #include "reference/world_setup.h"
 
 namespace manyworlds::reference {
@@ -92,6 +93,17 @@ class DistanceConstraint {
 
   const AxisPart<T>& axis_part() const { return axis_; }
   const Vec3<T>& normal() const { return normal_; }
+
+  // Solver state (reference/solver_state.h), in the batch's order
+  // (docs/stepping.md, "Solver state").
+  void SaveSolverState(SolverStateWriter<T>& out) const {
+    out(axis_.SaveState());
+    out(normal_);
+  }
+  void RestoreSolverState(SolverStateReader<T>& in) {
+    axis_.RestoreState(in.Scalar());
+    normal_ = in.Vector3();
+  }
 
  private:
   static Vec3<T> WorldPoint(const Body<T>& body, const Vec3<T>& local) {

@@ -37,6 +37,7 @@ struct ExactRowGroup {
   // Point groups: the lever arms (their pulls make the geometric stiffness).
   bool point = false;
   Vec3<T> r1 = Vec3<T>::Zero(), r2 = Vec3<T>::Zero();
+  std::size_t constraint = 0;  // its index in the scene (set by World::ExactRowGroups)
 };
 
 // C = p2 - p1:  J_i = [-e_i, -(r1 x e_i), e_i, r2 x e_i].

@@ -21,6 +21,7 @@
 #include "reference/math.h"
 #include "reference/point_part.h"
 #include "reference/rotation_euler_part.h"
+#include "reference/solver_state.h"
 #include "reference/world_setup.h"
 
 namespace manyworlds::reference {
@@ -73,6 +74,19 @@ class FixedConstraint {
   const Quat<T>& inv_initial_orientation() const { return inv_initial_orientation_; }
   const Vec3<T>& local_point1() const { return local_point1_; }
   const Vec3<T>& local_point2() const { return local_point2_; }
+
+  // The point part's accumulated impulse (the exact solve's point group).
+  Vec3<T> PointImpulse() const { return point_.SaveState(); }
+  // Solver state (reference/solver_state.h), in the batch's order
+  // (docs/stepping.md, "Solver state").
+  void SaveSolverState(SolverStateWriter<T>& out) const {
+    out(rotation_.SaveState());
+    out(point_.SaveState());
+  }
+  void RestoreSolverState(SolverStateReader<T>& in) {
+    rotation_.RestoreState(in.Vector3());
+    point_.RestoreState(in.Vector3());
+  }
 
  private:
   std::size_t body1_, body2_;

@@ -28,6 +28,7 @@
 #include "reference/body.h"
 #include "reference/gear_part.h"
 #include "reference/math.h"
+#include "reference/solver_state.h"
 #include "reference/world_setup.h"
 
 namespace manyworlds::reference {
@@ -84,6 +85,15 @@ class GearConstraint {
   T PositionError(T rotation1, T rotation2) const { return rotation1 + ratio_ * rotation2; }
 
   const GearPart<T>& gear_part() const { return gear_; }
+
+  // Solver state (reference/solver_state.h), in the batch's order
+  // (docs/stepping.md, "Solver state").
+  void SaveSolverState(SolverStateWriter<T>& out) const {
+    out(gear_.SaveState());
+  }
+  void RestoreSolverState(SolverStateReader<T>& in) {
+    gear_.RestoreState(in.Scalar());
+  }
 
  private:
   void CalculateProperties(const Body<T>& body1, const Body<T>& body2) {

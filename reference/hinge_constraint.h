@@ -54,6 +54,7 @@
 #include "reference/math.h"
 #include "reference/point_part.h"
 #include "reference/rotation_euler_part.h"
+#include "reference/solver_state.h"
 #include "reference/spring_part.h"
 #include "reference/world_setup.h"
 
@@ -208,6 +209,27 @@ class HingeConstraint {
   // What a velocity setup does to the turn count (the exact solve has none).
   void CountTurnsAt(const Body<T>& body1, const Body<T>& body2) {
     CountTurns(CurrentAngle(body1, body2));
+  }
+
+  // The point part's accumulated impulse (the exact solve's point group).
+  Vec3<T> PointImpulse() const { return point_.SaveState(); }
+  // Solver state (reference/solver_state.h), in the batch's order
+  // (docs/stepping.md, "Solver state").
+  void SaveSolverState(SolverStateWriter<T>& out) const {
+    out(motor_.SaveState());
+    out(point_.SaveState());
+    out(rotation_.SaveState());
+    out(limit_.SaveState());
+    out(turn_reference_angle_);
+    out(turns_);
+  }
+  void RestoreSolverState(SolverStateReader<T>& in) {
+    motor_.RestoreState(in.Scalar());
+    point_.RestoreState(in.Vector3());
+    rotation_.RestoreState(in.Vector2());
+    limit_.RestoreState(in.Scalar());
+    turn_reference_angle_ = in.Scalar();
+    turns_ = in.Scalar();
   }
 
  private:

@@ -38,6 +38,7 @@
 #include "reference/hinge_rotation_part.h"
 #include "reference/math.h"
 #include "reference/rotation_euler_part.h"
+#include "reference/solver_state.h"
 #include "reference/spring_part.h"
 #include "reference/world_setup.h"
 
@@ -129,6 +130,23 @@ class PathConstraint {
                                                    baumgarte);
     }
     return sideways | limit | rotation;
+  }
+
+  // Solver state (reference/solver_state.h), in the batch's order
+  // (docs/stepping.md, "Solver state").
+  void SaveSolverState(SolverStateWriter<T>& out) const {
+    out(motor_.SaveState());
+    out(dual_axis_.SaveState());
+    out(limit_.SaveState());
+    out(hinge_.SaveState());
+    out(rotation_.SaveState());
+  }
+  void RestoreSolverState(SolverStateReader<T>& in) {
+    motor_.RestoreState(in.Scalar());
+    dual_axis_.RestoreState(in.Vector2());
+    limit_.RestoreState(in.Scalar());
+    hinge_.RestoreState(in.Vector2());
+    rotation_.RestoreState(in.Vector3());
   }
 
  private:

@@ -22,6 +22,7 @@
 #include "reference/body.h"
 #include "reference/independent_axis_part.h"
 #include "reference/math.h"
+#include "reference/solver_state.h"
 #include "reference/world_setup.h"
 
 namespace manyworlds::reference {
@@ -79,6 +80,19 @@ class PulleyConstraint {
   }
 
   const IndependentAxisPart<T>& part() const { return part_; }
+
+  // Solver state (reference/solver_state.h), in the batch's order
+  // (docs/stepping.md, "Solver state").
+  void SaveSolverState(SolverStateWriter<T>& out) const {
+    out(part_.SaveState());
+    out(n1_);
+    out(n2_);
+  }
+  void RestoreSolverState(SolverStateReader<T>& in) {
+    part_.RestoreState(in.Scalar());
+    n1_ = in.Vector3();
+    n2_ = in.Vector3();
+  }
 
  private:
   static Vec3<T> Attachment(const Body<T>& body, const Vec3<T>& local) {

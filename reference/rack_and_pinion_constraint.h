@@ -27,6 +27,7 @@
 #include "reference/body.h"
 #include "reference/math.h"
 #include "reference/rack_and_pinion_part.h"
+#include "reference/solver_state.h"
 #include "reference/world_setup.h"
 
 namespace manyworlds::reference {
@@ -82,6 +83,15 @@ class RackAndPinionConstraint {
   T PositionError(T rotation, T translation) const { return rotation - ratio_ * translation; }
 
   const RackAndPinionPart<T>& rack_and_pinion_part() const { return part_; }
+
+  // Solver state (reference/solver_state.h), in the batch's order
+  // (docs/stepping.md, "Solver state").
+  void SaveSolverState(SolverStateWriter<T>& out) const {
+    out(part_.SaveState());
+  }
+  void RestoreSolverState(SolverStateReader<T>& in) {
+    part_.RestoreState(in.Scalar());
+  }
 
  private:
   void CalculateProperties(const Body<T>& body1, const Body<T>& body2) {

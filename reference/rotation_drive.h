@@ -31,6 +31,7 @@
 #include "reference/angle_part.h"
 #include "reference/body.h"
 #include "reference/math.h"
+#include "reference/solver_state.h"
 #include "reference/spring_part.h"
 #include "reference/swing_twist_part.h"
 #include "reference/world_setup.h"
@@ -150,6 +151,14 @@ class RotationDrive {
   }
 
   const AnglePart<T>& part(int i) const { return part_[i]; }
+
+  // The three rows' impulses, X (twist) then Y and Z (reference/solver_state.h).
+  void SaveSolverState(SolverStateWriter<T>& out) const {
+    for (const AnglePart<T>& part : part_) out(part.SaveState());
+  }
+  void RestoreSolverState(SolverStateReader<T>& in) {
+    for (AnglePart<T>& part : part_) part.RestoreState(in.Scalar());
+  }
 
  private:
   Quat<T> Project(const Quat<T>& diff) const {

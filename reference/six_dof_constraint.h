@@ -41,6 +41,7 @@
 #include "reference/point_part.h"
 #include "reference/rotation_drive.h"
 #include "reference/rotation_euler_part.h"
+#include "reference/solver_state.h"
 #include "reference/spring_part.h"
 #include "reference/swing_twist_part.h"
 #include "reference/world_setup.h"
@@ -248,6 +249,25 @@ class SixDofConstraint {
       applied |= limit_[i].SolvePositionConstraint(body1, body2, axis_[i], error, baumgarte);
     }
     return applied;
+  }
+
+  // Solver state (reference/solver_state.h), in the batch's order
+  // (docs/stepping.md, "Solver state").
+  void SaveSolverState(SolverStateWriter<T>& out) const {
+    for (const AxisPart<T>& part : motor_) out(part.SaveState());
+    drive_.SaveSolverState(out);
+    out(rotation_.SaveState());
+    out(swing_twist_.SaveState());
+    out(point_.SaveState());
+    for (const AxisPart<T>& part : limit_) out(part.SaveState());
+  }
+  void RestoreSolverState(SolverStateReader<T>& in) {
+    for (AxisPart<T>& part : motor_) part.RestoreState(in.Scalar());
+    drive_.RestoreSolverState(in);
+    rotation_.RestoreState(in.Vector3());
+    swing_twist_.RestoreState(in.Vector3());
+    point_.RestoreState(in.Vector3());
+    for (AxisPart<T>& part : limit_) part.RestoreState(in.Scalar());
   }
 
  private:

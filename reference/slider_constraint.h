@@ -49,6 +49,7 @@
 #include "reference/dual_axis_part.h"
 #include "reference/math.h"
 #include "reference/rotation_euler_part.h"
+#include "reference/solver_state.h"
 #include "reference/spring_part.h"
 #include "reference/world_setup.h"
 
@@ -194,6 +195,21 @@ class SliderConstraint {
   const Vec3<T>& local_normal1() const { return local_normal1_; }
   const Vec3<T>& local_normal2() const { return local_normal2_; }
   bool HasInequalityRows() const { return UsesPosition(); }
+
+  // Solver state (reference/solver_state.h), in the batch's order
+  // (docs/stepping.md, "Solver state").
+  void SaveSolverState(SolverStateWriter<T>& out) const {
+    out(motor_.SaveState());
+    out(dual_axis_.SaveState());
+    out(rotation_.SaveState());
+    out(limit_.SaveState());
+  }
+  void RestoreSolverState(SolverStateReader<T>& in) {
+    motor_.RestoreState(in.Scalar());
+    dual_axis_.RestoreState(in.Vector2());
+    rotation_.RestoreState(in.Vector3());
+    limit_.RestoreState(in.Scalar());
+  }
 
  private:
   bool SolveMotorVelocity(Body<T>& body1, Body<T>& body2, T dt) {

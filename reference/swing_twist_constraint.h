@@ -25,6 +25,7 @@
 #include "reference/math.h"
 #include "reference/point_part.h"
 #include "reference/rotation_drive.h"
+#include "reference/solver_state.h"
 #include "reference/swing_twist_part.h"
 #include "reference/world_setup.h"
 
@@ -115,6 +116,21 @@ class SwingTwistConstraint {
   bool SolveLimitPosition(Body<T>& body1, Body<T>& body2, T /*dt*/, T baumgarte) {
     return part_.SolvePositionConstraint(body1, body2, Rotation(body1, body2),
                                          constraint_to_body1_, constraint_to_body2_, baumgarte);
+  }
+
+  // The point part's accumulated impulse (the exact solve's point group).
+  Vec3<T> PointImpulse() const { return point_.SaveState(); }
+  // Solver state (reference/solver_state.h), in the batch's order
+  // (docs/stepping.md, "Solver state").
+  void SaveSolverState(SolverStateWriter<T>& out) const {
+    drive_.SaveSolverState(out);
+    out(part_.SaveState());
+    out(point_.SaveState());
+  }
+  void RestoreSolverState(SolverStateReader<T>& in) {
+    drive_.RestoreSolverState(in);
+    part_.RestoreState(in.Vector3());
+    point_.RestoreState(in.Vector3());
   }
 
  private:

@@ -43,6 +43,7 @@
 #include <cmath>
 #include <cstddef>
 #include <set>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -68,6 +69,7 @@
 #include "reference/slider_constraint.h"
 #include "reference/path_constraint.h"
 #include "reference/six_dof_constraint.h"
+#include "reference/solver_state.h"
 #include "reference/swing_twist_constraint.h"
 #include "reference/world_setup.h"
 
@@ -162,6 +164,15 @@ class World {
   // Contact slots (docs/contacts.md), in the order of their body pairs (i, j).
   std::size_t contact_count() const { return contacts_.size(); }
   const ContactConstraint<T>& contact(std::size_t i) const { return contacts_.at(i); }
+
+  // Solver state (reference/solver_state.h): what the constraints, in scene
+  // order, then the contact slots carry from one step to the next, in the
+  // batch's layout (Batch::GetSolverState). SetSolverState throws
+  // std::invalid_argument for a count that does not fit. With the exact solve
+  // the point groups' impulses (the geometric stiffness's pulls) are set from
+  // the point parts' accumulated impulses, where the batch keeps them.
+  std::vector<T> SolverState() const;
+  void SetSolverState(std::span<const T> values);
 
   // The hinge's current angle (body 2 relative to body 1, in (−π, π]) and the
   // slider's current position, from the bodies as they are now.
@@ -436,8 +447,10 @@ class World {
   // Every solved constraint's row groups at the current poses, in scene order.
   std::vector<ExactRowGroup<T>> ExactRowGroups() const {
     std::vector<ExactRowGroup<T>> groups;
-    for (const Constraint& constraint : constraints_) {
+    for (std::size_t index = 0; index < constraints_.size(); ++index) {
+      const Constraint& constraint = constraints_[index];
       if (!IsSolved(constraint)) continue;
+      const std::size_t first_group = groups.size();
       std::visit(
           [&](const auto& c) {
             using Type = std::decay_t<decltype(c)>;
@@ -466,6 +479,7 @@ class World {
             }
           },
           constraint);
+      for (std::size_t k = first_group; k < groups.size(); ++k) groups[k].constraint = index;
     }
     return groups;
   }
@@ -689,6 +703,41 @@ void World<T>::Step(const StepSettings& settings) {
   for (BodyMotionSettings<T>& motion : motion_) {
     motion.force.setZero();
     motion.torque.setZero();
+  }
+}
+
+template <class T>
+std::vector<T> World<T>::SolverState() const {
+  std::vector<T> values;
+  SolverStateWriter<T> out(values);
+  for (const Constraint& constraint : constraints_) {
+    std::visit([&](const auto& c) { c.SaveSolverState(out); }, constraint);
+  }
+  for (const ContactConstraint<T>& contact : contacts_) contact.SaveSolverState(out);
+  return values;
+}
+
+template <class T>
+void World<T>::SetSolverState(std::span<const T> values) {
+  SolverStateReader<T> in(values);
+  for (Constraint& constraint : constraints_) {
+    std::visit([&](auto& c) { c.RestoreSolverState(in); }, constraint);
+  }
+  for (ContactConstraint<T>& contact : contacts_) contact.RestoreSolverState(in);
+  if (!in.AtEnd()) {
+    throw std::invalid_argument("reference::World::SetSolverState: " +
+                                std::to_string(values.size()) + " values are too many");
+  }
+  if (exact_impulses_.empty()) return;
+  const std::vector<ExactRowGroup<T>> groups = ExactRowGroups();
+  exact_impulses_.assign(groups.size(), Vec3<T>::Zero());
+  for (std::size_t k = 0; k < groups.size(); ++k) {
+    if (!groups[k].point) continue;
+    std::visit(
+        [&](const auto& c) {
+          if constexpr (requires { c.PointImpulse(); }) exact_impulses_[k] = c.PointImpulse();
+        },
+        constraints_[groups[k].constraint]);
   }
 }
 

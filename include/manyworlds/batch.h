@@ -338,6 +338,22 @@ class Batch {
   void GetWorldState(std::size_t world, std::span<float> out) const;
   void SetField(StateField field, std::span<const float> in);
 
+  // ---- solver state of one world: what its constraints and contact slots
+  // carry from one step to the next besides the bodies (Jolt's SaveState /
+  // RestoreState): the accumulated impulses that warm-start the next step,
+  // the hinges' turn counts, the directions distance, pulley and cone
+  // constraints remember, and the contacts' kept points. SolverStateSize()
+  // floats, constraints in scene order then contact slots, each as
+  // docs/stepping.md ("Solver state") lists; rows a constraint does not have
+  // read 0. reference::World::SolverState uses the same layout.
+  std::size_t SolverStateSize() const;
+  void GetSolverState(std::size_t world, std::span<float> out) const;
+  // Refuses (std::invalid_argument naming the constraint or contact, the
+  // value and its index) before writing anything: a wrong size, a value that
+  // is not finite, a non-zero value for a row the constraint does not have, a
+  // contact point's kept flag other than 0 or 1.
+  void SetSolverState(std::size_t world, std::span<const float> in);
+
   // Back to the scene's initial state (state, accumulated impulses, motor
   // targets and per-world overrides) in the worlds with mask[world] != 0.
   void Reset(std::span<const std::uint8_t> world_mask);

@@ -194,6 +194,37 @@ def test_reset_changes_only_masked_worlds(cartpole):
     assert_same_bits(after[~selected], initial[~selected])
 
 
+def test_a_world_given_anothers_state_and_solver_state_continues_as_it(cartpole):
+    rng = np.random.default_rng(3)
+    step_with_forces(cartpole, [random_cart_forces(rng, WORLDS) for _ in range(10)])
+    assert cartpole.solver_state_size == 16  # slider 7, hinge 9 (docs/stepping.md)
+    source, copy = 1, WORLDS - 1
+    impulses = cartpole.get_solver_state(source)
+    assert impulses.shape == (16,) and impulses.dtype == np.float32
+    assert not np.array_equal(impulses, cartpole.get_solver_state(copy))
+    state = cartpole.get_state()
+    state[copy] = state[source]
+    cartpole.set_state(state)
+    cartpole.set_solver_state(copy, impulses)
+    forces = [random_cart_forces(rng, WORLDS) for _ in range(10)]
+    for step_forces in forces:
+        step_forces[copy] = step_forces[source]
+    step_with_forces(cartpole, forces)
+    after = cartpole.get_state()
+    assert_same_bits(after[copy], after[source])
+    out = np.zeros(16, np.float32)
+    assert cartpole.get_solver_state(copy, out=out) is out
+    assert_same_bits(out, cartpole.get_solver_state(source))
+    bad = impulses.copy()
+    bad[8] = np.nan  # the pole hinge's point impulse
+    with pytest.raises(ValueError, match="pole hinge.*point impulse"):
+        cartpole.set_solver_state(copy, bad)
+    with pytest.raises(ValueError):
+        cartpole.set_solver_state(copy, impulses[:15])
+    with pytest.raises((IndexError, ValueError)):
+        cartpole.get_solver_state(WORLDS)
+
+
 def test_snapshot_restore_is_exact(cartpole):
     rng = np.random.default_rng(5)
     first = [random_cart_forces(rng, WORLDS) for _ in range(10)]
