@@ -506,8 +506,8 @@ TEST_P(AllowedDofsTargetTest, MixedScenesMatchTheReferenceStepByStep) {
   for (int step = 0; step < kSteps; ++step) {
     batch.GetState(state);
     for (std::size_t w = 0; w < kWorlds; ++w) {
-      SetReferenceState(float_worlds[w], state.data() + w * per_world);
-      SetReferenceState(double_worlds[w], state.data() + w * per_world);
+      SyncReferenceWorld(float_worlds[w], batch, w, state.data() + w * per_world);
+      SyncReferenceWorld(double_worlds[w], batch, w, state.data() + w * per_world);
       for (std::size_t body : kMixedDynamicBodies) {
         // Gentler than (a): the bodies here are light (3-15 g m^2).
         const Float3 f = ForceFor(w, step), t = TorqueFor(w, step);

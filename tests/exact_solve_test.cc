@@ -318,8 +318,8 @@ TEST_P(ExactSolveTest, EveryLaneMatchesTheDenseDoubleSolveStepByStep) {
   for (int step = 0; step < 120; ++step) {
     batch.GetState(state);
     for (std::size_t w = 0; w < kWorlds; ++w) {
-      SetReferenceState(worlds[w], state.data() + w * per_world);
-      SetReferenceState(float_worlds[w], state.data() + w * per_world);
+      SyncReferenceWorld(worlds[w], batch, w, state.data() + w * per_world);
+      SyncReferenceWorld(float_worlds[w], batch, w, state.data() + w * per_world);
       worlds[w].Step(settings);
       float_worlds[w].Step(settings);
     }

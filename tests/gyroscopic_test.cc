@@ -146,8 +146,8 @@ TEST_P(GyroscopicTargetTest, EveryLaneMatchesTheReferenceStepByStep) {
   for (int step = 0; step < kSteps; ++step) {
     batch.GetState(state);
     for (std::size_t w = 0; w < kWorlds; ++w) {
-      SetReferenceState(float_worlds[w], state.data() + w * per_world);
-      SetReferenceState(double_worlds[w], state.data() + w * per_world);
+      SyncReferenceWorld(float_worlds[w], batch, w, state.data() + w * per_world);
+      SyncReferenceWorld(double_worlds[w], batch, w, state.data() + w * per_world);
       float_worlds[w].Step(settings);
       double_worlds[w].Step(settings);
     }

@@ -2,8 +2,8 @@
 // the batch against reference::World step by step (scene_comparison_test.cc,
 // allowed_dofs_test.cc, exact_solve_test.cc): deviations in units of
 // FLT_EPSILON x max(1, |value|) (rotations: FLT_EPSILON, q and -q the same),
-// syncing a reference world to a lane's state, and kicking every world
-// differently.
+// syncing a reference world to a lane's state (bodies and solver state), and
+// kicking every world differently.
 #pragma once
 
 #include <algorithm>
@@ -74,6 +74,21 @@ void SetReferenceState(reference::World<T>& world, const float* lane_bodies) {
     body.linear_velocity = reference::Vec3<T>(s[7], s[8], s[9]);
     body.angular_velocity = reference::Vec3<T>(s[10], s[11], s[12]);
   }
+}
+
+// A reference world given everything lane `lane_world` of the batch steps
+// from: its bodies (lane_bodies, that world's rows of GetState) and its solver
+// state (accumulated impulses, hinge turns, remembered directions, the
+// contacts' kept points; Batch::GetSolverState). One step of both then
+// differs only by that step's rounding: no history the two built apart (a
+// warm start, a contact point kept on one side only) carries into it.
+template <class T>
+void SyncReferenceWorld(reference::World<T>& world, const Batch& batch, std::size_t lane_world,
+                        const float* lane_bodies) {
+  SetReferenceState(world, lane_bodies);
+  std::vector<float> solver_state(batch.SolverStateSize());
+  batch.GetSolverState(lane_world, solver_state);
+  world.SetSolverState(std::vector<T>(solver_state.begin(), solver_state.end()));
 }
 
 // Calls edit(world, body, its kStateFloatsPerBody floats) for every dynamic
