@@ -1,7 +1,7 @@
 // Batch: one world's solver state as plain floats (GetSolverState /
 // SetSolverState), what its constraints and contact slots carry from one
 // step to the next besides the bodies. The layout is listed in
-// docs/stepping.md ("Solver state"); reference::World::SolverState writes the
+// docs/stepping.md ("Solver state of one world"); reference::World::SolverState writes the
 // same values in the same order (reference/solver_state.h), so a test can
 // step a reference world from exactly the state a lane steps from.
 

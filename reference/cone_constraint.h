@@ -81,7 +81,7 @@ class ConeConstraint {
   const Vec3<T>& rotation_axis() const { return rotation_axis_; }
 
   // Solver state (reference/solver_state.h), in the batch's order
-  // (docs/stepping.md, "Solver state").
+  // (docs/stepping.md, "Solver state of one world").
   void SaveSolverState(SolverStateWriter<T>& out) const {
     out(point_.SaveState());
     out(angle_.SaveState());

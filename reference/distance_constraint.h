@@ -95,7 +95,7 @@ class DistanceConstraint {
   const Vec3<T>& normal() const { return normal_; }
 
   // Solver state (reference/solver_state.h), in the batch's order
-  // (docs/stepping.md, "Solver state").
+  // (docs/stepping.md, "Solver state of one world").
   void SaveSolverState(SolverStateWriter<T>& out) const {
     out(axis_.SaveState());
     out(normal_);

@@ -78,7 +78,7 @@ class FixedConstraint {
   // The point part's accumulated impulse (the exact solve's point group).
   Vec3<T> PointImpulse() const { return point_.SaveState(); }
   // Solver state (reference/solver_state.h), in the batch's order
-  // (docs/stepping.md, "Solver state").
+  // (docs/stepping.md, "Solver state of one world").
   void SaveSolverState(SolverStateWriter<T>& out) const {
     out(rotation_.SaveState());
     out(point_.SaveState());

@@ -87,7 +87,7 @@ class GearConstraint {
   const GearPart<T>& gear_part() const { return gear_; }
 
   // Solver state (reference/solver_state.h), in the batch's order
-  // (docs/stepping.md, "Solver state").
+  // (docs/stepping.md, "Solver state of one world").
   void SaveSolverState(SolverStateWriter<T>& out) const {
     out(gear_.SaveState());
   }

@@ -133,7 +133,7 @@ class PathConstraint {
   }
 
   // Solver state (reference/solver_state.h), in the batch's order
-  // (docs/stepping.md, "Solver state").
+  // (docs/stepping.md, "Solver state of one world").
   void SaveSolverState(SolverStateWriter<T>& out) const {
     out(motor_.SaveState());
     out(dual_axis_.SaveState());

@@ -59,7 +59,7 @@ class PointConstraint {
   // The point part's accumulated impulse (the exact solve's point group).
   Vec3<T> PointImpulse() const { return point_.SaveState(); }
   // Solver state (reference/solver_state.h), in the batch's order
-  // (docs/stepping.md, "Solver state").
+  // (docs/stepping.md, "Solver state of one world").
   void SaveSolverState(SolverStateWriter<T>& out) const {
     out(point_.SaveState());
   }

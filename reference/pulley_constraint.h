@@ -82,7 +82,7 @@ class PulleyConstraint {
   const IndependentAxisPart<T>& part() const { return part_; }
 
   // Solver state (reference/solver_state.h), in the batch's order
-  // (docs/stepping.md, "Solver state").
+  // (docs/stepping.md, "Solver state of one world").
   void SaveSolverState(SolverStateWriter<T>& out) const {
     out(part_.SaveState());
     out(n1_);

@@ -85,7 +85,7 @@ class RackAndPinionConstraint {
   const RackAndPinionPart<T>& rack_and_pinion_part() const { return part_; }
 
   // Solver state (reference/solver_state.h), in the batch's order
-  // (docs/stepping.md, "Solver state").
+  // (docs/stepping.md, "Solver state of one world").
   void SaveSolverState(SolverStateWriter<T>& out) const {
     out(part_.SaveState());
   }

@@ -252,7 +252,7 @@ class SixDofConstraint {
   }
 
   // Solver state (reference/solver_state.h), in the batch's order
-  // (docs/stepping.md, "Solver state").
+  // (docs/stepping.md, "Solver state of one world").
   void SaveSolverState(SolverStateWriter<T>& out) const {
     for (const AxisPart<T>& part : motor_) out(part.SaveState());
     drive_.SaveSolverState(out);

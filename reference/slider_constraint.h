@@ -197,7 +197,7 @@ class SliderConstraint {
   bool HasInequalityRows() const { return UsesPosition(); }
 
   // Solver state (reference/solver_state.h), in the batch's order
-  // (docs/stepping.md, "Solver state").
+  // (docs/stepping.md, "Solver state of one world").
   void SaveSolverState(SolverStateWriter<T>& out) const {
     out(motor_.SaveState());
     out(dual_axis_.SaveState());

@@ -2,7 +2,7 @@
 // contact slots carry from one step to the next besides the bodies (Jolt's
 // SaveState / RestoreState, spec 4.4: the accumulated impulses that warm-start
 // the next step, and the directions some constraints remember). The order is
-// the batch's (Batch::GetSolverState, docs/stepping.md "Solver state"), so a
+// the batch's (Batch::GetSolverState, docs/stepping.md "Solver state of one world"), so a
 // test can give a reference world exactly the state a lane steps from.
 #pragma once
 

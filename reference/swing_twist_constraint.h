@@ -121,7 +121,7 @@ class SwingTwistConstraint {
   // The point part's accumulated impulse (the exact solve's point group).
   Vec3<T> PointImpulse() const { return point_.SaveState(); }
   // Solver state (reference/solver_state.h), in the batch's order
-  // (docs/stepping.md, "Solver state").
+  // (docs/stepping.md, "Solver state of one world").
   void SaveSolverState(SolverStateWriter<T>& out) const {
     drive_.SaveSolverState(out);
     out(part_.SaveState());

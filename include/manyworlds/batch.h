@@ -344,7 +344,7 @@ class Batch {
   // the hinges' turn counts, the directions distance, pulley and cone
   // constraints remember, and the contacts' kept points. SolverStateSize()
   // floats, constraints in scene order then contact slots, each as
-  // docs/stepping.md ("Solver state") lists; rows a constraint does not have
+  // docs/stepping.md ("Solver state of one world") lists; rows a constraint does not have
   // read 0. reference::World::SolverState uses the same layout.
   std::size_t SolverStateSize() const;
   void GetSolverState(std::size_t world, std::span<float> out) const;
