@@ -168,9 +168,10 @@ class World {
   // Solver state (reference/solver_state.h): what the constraints, in scene
   // order, then the contact slots carry from one step to the next, in the
   // batch's layout (Batch::GetSolverState). SetSolverState throws
-  // std::invalid_argument for a count that does not fit. With the exact solve
-  // the point groups' impulses (the geometric stiffness's pulls) are set from
-  // the point parts' accumulated impulses, where the batch keeps them.
+  // std::invalid_argument for a count that does not fit. It also sets the
+  // exact solve's point-group impulses (the geometric stiffness's pulls, apart
+  // here) from the point parts' accumulated impulses, where the batch keeps
+  // them (the exact solve keeps no other group's impulse).
   std::vector<T> SolverState() const;
   void SetSolverState(std::span<const T> values);
 
@@ -728,7 +729,6 @@ void World<T>::SetSolverState(std::span<const T> values) {
     throw std::invalid_argument("reference::World::SetSolverState: " +
                                 std::to_string(values.size()) + " values are too many");
   }
-  if (exact_impulses_.empty()) return;
   const std::vector<ExactRowGroup<T>> groups = ExactRowGroups();
   exact_impulses_.assign(groups.size(), Vec3<T>::Zero());
   for (std::size_t k = 0; k < groups.size(); ++k) {
