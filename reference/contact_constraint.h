@@ -317,7 +317,6 @@ class ContactConstraint {
     return moved;
   }
 
-  // ---- read-only views (this substep's manifold), for tests
   // Solver state (reference/solver_state.h), in the batch's layout: the
   // friction impulses (t1, t2, angular), then kMaxContactPoints times: 1 for a
   // kept point (else 0 and the rest of the point 0), its local points on body
@@ -355,6 +354,7 @@ class ContactConstraint {
     for (int i = count_; i < kMaxContactPoints; ++i) normal_[i].lambda = T(0);
   }
 
+  // ---- read-only views (this substep's manifold), for tests
   bool Exists() const { return count_ > 0; }
   int PointCount() const { return count_; }
   const Vec3<T>& Normal() const { return normal_direction_; }  // body 1 to body 2; 0 if none

@@ -44,7 +44,6 @@ class SolverStateReader {
     const T y = Next();
     return Vec3<T>(x, y, Next());
   }
-  bool AtEnd() const { return at_ == in_.size(); }
 
  private:
   T Next() {

@@ -168,10 +168,11 @@ class World {
   // Solver state (reference/solver_state.h): what the constraints, in scene
   // order, then the contact slots carry from one step to the next, in the
   // batch's layout (Batch::GetSolverState). SetSolverState throws
-  // std::invalid_argument for a count that does not fit. It also sets the
-  // exact solve's point-group impulses (the geometric stiffness's pulls, apart
-  // here) from the point parts' accumulated impulses, where the batch keeps
-  // them (the exact solve keeps no other group's impulse).
+  // std::invalid_argument, writing nothing, for a count that does not fit. It
+  // also sets the exact solve's point-group impulses (the geometric
+  // stiffness's pulls, apart here) from the point parts' accumulated
+  // impulses, where the batch keeps them (the exact solve keeps no other
+  // group's impulse).
   std::vector<T> SolverState() const;
   void SetSolverState(std::span<const T> values);
 
@@ -720,15 +721,17 @@ std::vector<T> World<T>::SolverState() const {
 
 template <class T>
 void World<T>::SetSolverState(std::span<const T> values) {
+  const std::size_t expected = SolverState().size();
+  if (values.size() != expected) {  // checked before anything is written
+    throw std::invalid_argument("reference::World::SetSolverState: " +
+                                std::to_string(values.size()) + " values, the layout has " +
+                                std::to_string(expected));
+  }
   SolverStateReader<T> in(values);
   for (Constraint& constraint : constraints_) {
     std::visit([&](auto& c) { c.RestoreSolverState(in); }, constraint);
   }
   for (ContactConstraint<T>& contact : contacts_) contact.RestoreSolverState(in);
-  if (!in.AtEnd()) {
-    throw std::invalid_argument("reference::World::SetSolverState: " +
-                                std::to_string(values.size()) + " values are too many");
-  }
   const std::vector<ExactRowGroup<T>> groups = ExactRowGroups();
   exact_impulses_.assign(groups.size(), Vec3<T>::Zero());
   for (std::size_t k = 0; k < groups.size(); ++k) {
