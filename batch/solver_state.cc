@@ -23,10 +23,10 @@ namespace {
 // Calls visit(array, what) for every value of a constraint's solver state in
 // the layout's order: the LaneArray holding it in the block, or nullptr for a
 // row the constraint does not have (its value is 0). Reads and writes go
-// through the same visitor, so `block` is writable here; GetSolverState only
-// reads through it.
+// through the same visitor, so the block is writable here; GetSolverState
+// only reads through it.
 template <class Visit>
-void VisitConstraintState(const ConstraintPlan& c, std::byte* block, Visit&& visit) {
+void VisitConstraintState(const ConstraintBlock& c, Visit&& visit) {
   const auto one = [&](LaneArray* array, const char* what) { visit(array, what); };
   const auto two = [&](Vec2Lanes& v, const char* what) {
     visit(&v.x, what);
@@ -40,24 +40,24 @@ void VisitConstraintState(const ConstraintPlan& c, std::byte* block, Visit&& vis
   // Optional rows (allocated only when the scene uses them): motor or
   // friction rows, limits, rotation drives.
   const auto angular_motor = [&]() -> LaneArray* {
-    if (!c.has_motor()) return nullptr;
-    return &At<AngularMotorLanes>(block, c.motor_offset).part.persistent.total_lambda;
+    if (!c.plan.has_motor()) return nullptr;
+    return &c.Motor<AngularMotorLanes>().part.persistent.total_lambda;
   };
   const auto angular_limit = [&]() -> LaneArray* {
-    if (!c.has_limits()) return nullptr;
-    return &At<AngularLimitLanes>(block, c.limit_offset).part.persistent.total_lambda;
+    if (!c.plan.has_limits()) return nullptr;
+    return &c.Limit<AngularLimitLanes>().part.persistent.total_lambda;
   };
   const auto linear_motor = [&](std::size_t i) -> LaneArray* {
-    if (!c.has_motor()) return nullptr;
-    return &(&At<LinearMotorLanes>(block, c.motor_offset))[i].part.persistent.total_lambda;
+    if (!c.plan.has_motor()) return nullptr;
+    return &(&c.Motor<LinearMotorLanes>())[i].part.persistent.total_lambda;
   };
   const auto linear_limit = [&](std::size_t i) -> LaneArray* {
-    if (!c.has_limits()) return nullptr;
-    return &(&At<LinearLimitLanes>(block, c.limit_offset))[i].part.persistent.total_lambda;
+    if (!c.plan.has_limits()) return nullptr;
+    return &(&c.Limit<LinearLimitLanes>())[i].part.persistent.total_lambda;
   };
   const auto rotation_drive = [&](std::size_t i) -> LaneArray* {
-    if (!c.has_rotation_drives()) return nullptr;
-    RotationDriveLanes& drives = At<RotationDriveLanes>(block, c.rotation_drive_offset);
+    if (!c.plan.has_rotation_drives()) return nullptr;
+    RotationDriveLanes& drives = At<RotationDriveLanes>(c.block, c.plan.rotation_drive_offset);
     return &drives.rows[i].part.persistent.total_lambda;
   };
   const auto rotation_drives = [&] {
@@ -68,20 +68,20 @@ void VisitConstraintState(const ConstraintPlan& c, std::byte* block, Visit&& vis
     one(&part.persistent.swing_z_lambda, "swing z impulse");
     one(&part.persistent.twist_lambda, "twist impulse");
   };
-  switch (c.type) {
+  switch (c.plan.type) {
     case ConstraintType::kPoint: {
-      auto& s = At<PointConstraintLanes>(block, c.offset);
+      auto& s = c.Main<PointConstraintLanes>();
       three(s.point.persistent.total_lambda, "point impulse");
       return;
     }
     case ConstraintType::kFixed: {
-      auto& s = At<FixedConstraintLanes>(block, c.offset);
+      auto& s = c.Main<FixedConstraintLanes>();
       three(s.rotation.persistent.total_lambda, "rotation impulse");
       three(s.point.persistent.total_lambda, "point impulse");
       return;
     }
     case ConstraintType::kHinge: {
-      auto& s = At<HingeConstraintLanes>(block, c.offset);
+      auto& s = c.Main<HingeConstraintLanes>();
       one(angular_motor(), "motor impulse");
       three(s.point.persistent.total_lambda, "point impulse");
       two(s.rotation.persistent.total_lambda, "hinge rotation impulse");
@@ -91,7 +91,7 @@ void VisitConstraintState(const ConstraintPlan& c, std::byte* block, Visit&& vis
       return;
     }
     case ConstraintType::kSlider: {
-      auto& s = At<SliderConstraintLanes>(block, c.offset);
+      auto& s = c.Main<SliderConstraintLanes>();
       one(linear_motor(0), "motor impulse");
       two(s.dual.persistent.total_lambda, "dual axis impulse");
       three(s.rotation.persistent.total_lambda, "rotation impulse");
@@ -99,39 +99,39 @@ void VisitConstraintState(const ConstraintPlan& c, std::byte* block, Visit&& vis
       return;
     }
     case ConstraintType::kGear:
-      one(&At<GearConstraintLanes>(block, c.offset).part.persistent.total_lambda, "gear impulse");
+      one(&c.Main<GearConstraintLanes>().part.persistent.total_lambda, "gear impulse");
       return;
     case ConstraintType::kRackAndPinion:
-      one(&At<RackAndPinionConstraintLanes>(block, c.offset).part.persistent.total_lambda,
+      one(&c.Main<RackAndPinionConstraintLanes>().part.persistent.total_lambda,
           "rack and pinion impulse");
       return;
     case ConstraintType::kDistance:
       one(linear_limit(0), "distance impulse");
-      three(At<DistanceConstraintLanes>(block, c.offset).normal, "normal");
+      three(c.Main<DistanceConstraintLanes>().normal, "normal");
       return;
     case ConstraintType::kPulley: {
-      auto& s = At<PulleyConstraintLanes>(block, c.offset);
+      auto& s = c.Main<PulleyConstraintLanes>();
       one(&s.part.persistent.total_lambda, "pulley impulse");
       three(s.geometry.n1, "rope direction 1");
       three(s.geometry.n2, "rope direction 2");
       return;
     }
     case ConstraintType::kCone: {
-      auto& s = At<ConeConstraintLanes>(block, c.offset);
+      auto& s = c.Main<ConeConstraintLanes>();
       three(s.point.persistent.total_lambda, "point impulse");
       one(&s.angle.persistent.total_lambda, "cone impulse");
       three(s.geometry.axis, "rotation axis");
       return;
     }
     case ConstraintType::kSwingTwist: {
-      auto& s = At<SwingTwistConstraintLanes>(block, c.offset);
+      auto& s = c.Main<SwingTwistConstraintLanes>();
       rotation_drives();
       swing_twist(s.swing_twist);
       three(s.point.persistent.total_lambda, "point impulse");
       return;
     }
     case ConstraintType::kSixDof: {
-      auto& s = At<SixDofConstraintLanes>(block, c.offset);
+      auto& s = c.Main<SixDofConstraintLanes>();
       for (std::size_t i = 0; i < 3; ++i) one(linear_motor(i), "translation drive impulse");
       rotation_drives();
       three(s.rotation.persistent.total_lambda, "rotation impulse");
@@ -141,7 +141,7 @@ void VisitConstraintState(const ConstraintPlan& c, std::byte* block, Visit&& vis
       return;
     }
     case ConstraintType::kPath: {
-      auto& s = At<PathConstraintLanes>(block, c.offset);
+      auto& s = c.Main<PathConstraintLanes>();
       one(linear_motor(0), "motor impulse");
       two(s.dual.persistent.total_lambda, "dual axis impulse");
       one(&s.limit.persistent.total_lambda, "end limit impulse");
@@ -236,8 +236,9 @@ void WriteContactState(const ContactPlan& c, std::byte* block, std::size_t lane,
 
 std::size_t ConstraintValueCount(const StepPlan& plan, std::byte* block) {
   std::size_t count = 0;
-  for (const ConstraintPlan& c : plan.constraints) {
-    VisitConstraintState(c, block, [&](LaneArray*, const char*) { ++count; });
+  for (std::size_t k = 0; k < plan.constraints.size(); ++k) {
+    VisitConstraintState(ConstraintInBlock(plan, k, block),
+                         [&](LaneArray*, const char*) { ++count; });
   }
   return count;
 }
@@ -261,10 +262,11 @@ void Batch::GetSolverState(std::size_t world, std::span<float> out) const {
   const std::size_t lane = Impl::Lane(world);
   std::byte* block = Writable(batch.Block(world / kLaneWidth));
   std::size_t i = 0;
-  for (const ConstraintPlan& c : batch.plan_.constraints) {
-    VisitConstraintState(c, block, [&](LaneArray* array, const char*) {
-      out[i++] = array != nullptr ? (*array)[lane] : 0.0f;
-    });
+  for (std::size_t k = 0; k < batch.plan_.constraints.size(); ++k) {
+    VisitConstraintState(ConstraintInBlock(batch.plan_, k, block),
+                         [&](LaneArray* array, const char*) {
+                           out[i++] = array != nullptr ? (*array)[lane] : 0.0f;
+                         });
   }
   for (const ContactPlan& c : batch.plan_.contacts) {
     ReadContactState(c, block, lane, &out[i]);
@@ -286,14 +288,16 @@ void Batch::SetSolverState(std::size_t world, std::span<const float> in) {
   };
   // Every value is checked before any is written.
   std::size_t i = 0;
-  for (const ConstraintPlan& c : batch.plan_.constraints) {
-    VisitConstraintState(c, block, [&](LaneArray* array, const char* what) {
-      const float value = in[i++];
-      if (!std::isfinite(value)) refuse(c.label, what, i - 1, "is not finite");
-      if (array == nullptr && value != 0.0f) {
-        refuse(c.label, what, i - 1, "must be 0: the constraint has no such row");
-      }
-    });
+  for (std::size_t k = 0; k < batch.plan_.constraints.size(); ++k) {
+    const std::string& label = batch.plan_.constraints[k].label;
+    VisitConstraintState(ConstraintInBlock(batch.plan_, k, block),
+                         [&](LaneArray* array, const char* what) {
+                           const float value = in[i++];
+                           if (!std::isfinite(value)) refuse(label, what, i - 1, "is not finite");
+                           if (array == nullptr && value != 0.0f) {
+                             refuse(label, what, i - 1, "must be 0: the constraint has no such row");
+                           }
+                         });
   }
   const std::size_t contacts_start = i;
   for (const ContactPlan& c : batch.plan_.contacts) {
@@ -304,11 +308,12 @@ void Batch::SetSolverState(std::size_t world, std::span<const float> in) {
     i += kContactValues;
   }
   i = 0;
-  for (const ConstraintPlan& c : batch.plan_.constraints) {
-    VisitConstraintState(c, block, [&](LaneArray* array, const char*) {
-      const float value = in[i++];
-      if (array != nullptr) (*array)[lane] = value;
-    });
+  for (std::size_t k = 0; k < batch.plan_.constraints.size(); ++k) {
+    VisitConstraintState(ConstraintInBlock(batch.plan_, k, block),
+                         [&](LaneArray* array, const char*) {
+                           const float value = in[i++];
+                           if (array != nullptr) (*array)[lane] = value;
+                         });
   }
   i = contacts_start;
   for (const ContactPlan& c : batch.plan_.contacts) {

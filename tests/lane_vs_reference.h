@@ -27,15 +27,17 @@ struct Deviation {
   }
 };
 
+// |got - want| in FLT_EPSILON x max(1, |want|).
+inline double RelativeDeviation(double got, double want) {
+  return std::abs(got - want) / (FLT_EPSILON * std::max(1.0, std::abs(want)));
+}
+
 // The lane's body state, relative to the reference body, in units of
 // FLT_EPSILON * scale (see the top of this file).
 template <class T>
 Deviation Compare(const float* lane, const reference::Body<T>& body) {
   Deviation d;
-  // |got - want| in FLT_EPSILON x max(1, |want|).
-  const auto relative = [](double got, double want) {
-    return std::abs(got - want) / (FLT_EPSILON * std::max(1.0, std::abs(want)));
-  };
+  const auto relative = RelativeDeviation;
   for (int i = 0; i < 3; ++i) d.position = std::max(d.position, relative(lane[i], body.position[i]));
   const double q[4] = {double(body.rotation.x()), double(body.rotation.y()),
                        double(body.rotation.z()), double(body.rotation.w())};

@@ -172,12 +172,12 @@ TEST_P(SceneComparisonTest, EveryLaneMatchesTheReferenceStepByStep) {
       const std::vector<float> float_ref = float_worlds[w].SolverState();
       const std::vector<double> double_ref = double_worlds[w].SolverState();
       for (std::size_t i = 0; i < values; ++i) {
-        const auto relative = [](double got, double want) {
-          return std::abs(got - want) / (FLT_EPSILON * std::max(1.0, std::abs(want)));
-        };
-        state_float[i] = std::max(state_float[i], relative(solver_state[i], float_ref[i]));
-        state_double[i] = std::max(state_double[i], relative(solver_state[i], double_ref[i]));
-        state_float_ref[i] = std::max(state_float_ref[i], relative(float_ref[i], double_ref[i]));
+        state_float[i] =
+            std::max(state_float[i], RelativeDeviation(solver_state[i], float_ref[i]));
+        state_double[i] =
+            std::max(state_double[i], RelativeDeviation(solver_state[i], double_ref[i]));
+        state_float_ref[i] =
+            std::max(state_float_ref[i], RelativeDeviation(float_ref[i], double_ref[i]));
       }
     }
   }
