@@ -147,6 +147,7 @@ void Batch::Impl::Step(const StepSettings& settings, std::stop_token stop, const
       settings.warm_start && previous_substep_dt_ > 0.0f ? substep_dt / previous_substep_dt_
                                                          : 0.0f;
   params.velocity_iterations = settings.velocity_iterations;
+  params.velocity_tolerance = settings.velocity_tolerance;
   params.position_iterations = settings.position_iterations;
   params.baumgarte = settings.baumgarte;
   params.gravity = settings.gravity;

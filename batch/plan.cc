@@ -7,7 +7,9 @@
 #include <sstream>
 #include <type_traits>
 
+#include "batch/constraint_block.h"
 #include "batch/constraint_lanes.h"
+#include "batch/constraint_state.h"
 #include "batch/scene_checks.h"
 #include "kernels/body_lanes.h"
 #include "kernels/contact.h"
@@ -411,10 +413,59 @@ void CheckStepSettings(const StepSettings& s, const StepPlan& plan) {
   contact_setting("penetration_slop", s.penetration_slop);
   contact_setting("max_penetration_distance", s.max_penetration_distance);
   contact_setting("min_velocity_for_restitution", s.min_velocity_for_restitution);
+  if (!(s.velocity_tolerance >= 0.0f && std::isfinite(s.velocity_tolerance))) {
+    Refuse(what, "velocity_tolerance",
+           "must be finite and >= 0 (got " + ValueText(s.velocity_tolerance) + ")");
+  }
+  if (s.solver == JointSolver::kExact && s.velocity_tolerance != 0.0f) {
+    Refuse(what, "velocity_tolerance",
+           "must be 0 with the exact solver: it stops Gauss-Seidel's passes (got " +
+               ValueText(s.velocity_tolerance) + ")");
+  }
   if (s.solver == JointSolver::kExact && !plan.exact.available()) {
     Refuse(what, "solver", std::string("is exact, but ") + plan.exact.unavailable);
   }
 }
+
+namespace {
+
+// StepPlan::velocity_pass_arrays. The views only compute addresses, so a
+// zeroed block of the plan's size stands in for a real one.
+void ListVelocityPassArrays(StepPlan& plan) {
+  std::vector<LaneArray> block(plan.block_bytes / sizeof(LaneArray) + 1);
+  std::byte* base = reinterpret_cast<std::byte*>(block.data());
+  std::vector<std::size_t>& arrays = plan.velocity_pass_arrays;
+  const auto add = [&](const LaneArray& array) {
+    arrays.push_back(static_cast<std::size_t>(reinterpret_cast<const std::byte*>(&array) - base));
+  };
+  const auto add3 = [&](const Vec3Lanes& v) {
+    add(v.x);
+    add(v.y);
+    add(v.z);
+  };
+  for (const BodyPlan& body : plan.bodies) {
+    if (body.motion != MotionType::kDynamic) continue;
+    const BodyLanes& lanes = At<BodyLanes>(base, body.offset);
+    add3(lanes.linear_velocity);
+    add3(lanes.angular_velocity);
+  }
+  plan.body_velocity_arrays = arrays.size();
+  for (std::size_t k = 0; k < plan.constraints.size(); ++k) {
+    VisitConstraintState(ConstraintInBlock(plan, k, base), [&](LaneArray* array, const char*) {
+      if (array != nullptr) add(*array);
+    });
+  }
+  for (const ContactPlan& c : plan.contacts) {
+    const ContactLanes& manifold = At<ContactLanes>(base, c.offset);
+    add(manifold.tangent1_lambda);
+    add(manifold.tangent2_lambda);
+    add(manifold.angular_lambda);
+    const ContactPointLanes* points = &At<ContactPointLanes>(base, c.points_offset);
+    for (std::size_t i = 0; i < c.point_count; ++i) add(points[i].normal_lambda);
+  }
+}
+
+}  // namespace
 
 StepPlan CompilePlan(const Scene& scene) {
   StepPlan plan;
@@ -702,6 +753,7 @@ StepPlan CompilePlan(const Scene& scene) {
   }
 
   plan.block_bytes = layout.bytes();
+  ListVelocityPassArrays(plan);
   plan.exact = PlanExactSolve(scene, plan);
   return plan;
 }

@@ -6,6 +6,8 @@
 //        then of every contact slot (its points found, docs/contacts.md)
 //     3. warm start: impulses *= dt / dt_prev (first substep, 0 if off; 1 later)
 //     4. velocity iterations, until none of the block's worlds applied an impulse
+//        (with a velocity tolerance: until every world's last pass changed
+//        its velocities by at most that, batch/velocity_convergence-inl.h)
 //     5. integration                                    (dynamic and kinematic)
 //     6. position iterations, until none moved
 //   Contacts follow the constraints in every phase (Jolt's order).
@@ -29,6 +31,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
+#include <optional>
 
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "batch/step_kernels.cc"
@@ -48,6 +51,7 @@
 #include "batch/path_constraint-inl.h"
 #include "batch/six_dof_constraint-inl.h"
 #include "batch/swing_twist_constraint-inl.h"
+#include "batch/velocity_convergence-inl.h"
 #include "hwy/highway.h"
 #include "kernels/integration-inl.h"
 
@@ -248,6 +252,7 @@ bool StepBlockWith(const StepPlan& plan, std::byte* block, const std::byte* next
   // the plan cannot take it).
   thread_local ExactScratch scratch;
   if (exact) scratch.Fit(plan);
+  thread_local VelocityConvergenceScratch convergence_scratch;
 
   for (int substep = 0; substep < params.substeps; ++substep) {
     // Jolt: the dt ratio (0 without warm start) in the first substep only;
@@ -278,13 +283,21 @@ bool StepBlockWith(const StepPlan& plan, std::byte* block, const std::byte* next
       for_each_constraint([&](const ConstraintBlock& c) { WarmStartConstraint(c, step); });
       for_each_contact([&](const ContactBlock& c) { ContactWarmStart(c, ratio); });
       clock.Lap(StepPhase::kWarmStart);
+      // With a velocity tolerance each world stops on its own
+      // (batch/velocity_convergence-inl.h); without, Jolt's passes.
+      std::optional<VelocityConvergence> convergence;
+      if (params.velocity_tolerance > 0.0f) {
+        convergence.emplace(plan, block, params.velocity_tolerance, convergence_scratch);
+      }
       for (int iteration = 0; iteration < params.velocity_iterations; ++iteration) {
+        if (convergence) convergence->BeforePass();
         bool applied = false;
         for_each_constraint(
             [&](const ConstraintBlock& c) { applied |= SolveConstraintVelocity(c); });
         for_each_contact([&](const ContactBlock& c) { applied |= ContactSolveVelocity(c); });
-        if (!applied) break;
+        if (!applied || (convergence && convergence->AfterPass())) break;
       }
+      if (convergence) convergence->Finish();
       clock.Lap(StepPhase::kVelocity);
     }
 

@@ -18,6 +18,7 @@ struct StepParams {
   int substeps;
   float first_warm_start_ratio;  // dt / dt_prev of the first substep (0: cold)
   int velocity_iterations;
+  float velocity_tolerance;  // StepSettings::velocity_tolerance (0: every pass)
   int position_iterations;
   float baumgarte;
   Float3 gravity;

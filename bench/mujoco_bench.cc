@@ -14,6 +14,10 @@
 //       one task per thread's half.
 //   batch/<scene>/worlds:<N>/threads:<T>   Batch::Step of the same N worlds
 //       (float, dispatched SIMD target, the spec's step settings).
+//   batch_tolerance/<scene>/...  the same with StepSettings::velocity_tolerance
+//       1e-3 (each world's velocity passes stop once one changes its
+//       velocities by at most 1e-3 m/s and rad/s; MuJoCo stops its solver
+//       on a tolerance too); a table of its own after the main one.
 // Both run back to back per (scene, N, T), so their ratio sees the same load.
 // Cartpole gets CartpoleForce(seed 1, world, step) on the cart in both
 // engines, hopper and quadruped a position target per motor,
@@ -28,7 +32,8 @@
 //   MuJoCo:     the benchmark model vs the same model at dt/16 (forces held
 //               for the 16 substeps), tolerance 1e-12, 400 iterations (double);
 //   manyworlds: Batch (float, dt, 10 + 2 iterations) vs reference::World<double>
-//               with 16 substeps of dt/16 and 40 + 8 iterations.
+//               with 16 substeps of dt/16 and 40 + 8 iterations, and the same
+//               Batch with the velocity tolerance ("ours tol err").
 // A spin check (2 threads summing a counter vs 1) runs before and after.
 // Exits with 1 when any world of any benchmark or accuracy run was
 // non-finite, MuJoCo warned (e.g. an unstable simulation it reset), a
@@ -71,6 +76,16 @@ constexpr std::size_t kWorldCounts[] = {64, 4096};
 constexpr int kThreadCounts[] = {1, 2};
 constexpr std::uint64_t kOneSecond = 60, kFiveSeconds = 300;  // steps of 1/60 s
 constexpr int kFineSubsteps = 16;
+// batch_tolerance/...: the batch with StepSettings::velocity_tolerance, each
+// world stopping its velocity passes once a pass changes its velocities by
+// at most this (m/s, rad/s); its accuracy is printed next to the default's.
+constexpr float kBenchVelocityTolerance = 1e-3f;
+
+StepSettings ToleranceSettings() {
+  StepSettings settings;
+  settings.velocity_tolerance = kBenchVelocityTolerance;
+  return settings;
+}
 
 std::atomic<int> mujoco_warnings{0};
 
@@ -306,6 +321,13 @@ void RegisterAll() {
                                        RunBatch(state, batch, id, worlds, threads);
                                      })
             ->UseRealTime();
+        const std::string tolerant = Name("batch_tolerance", id, worlds, threads);
+        benchmark::RegisterBenchmark(tolerant.c_str(),
+                                     [=](benchmark::State& state) {
+                                       RunBatch(state, tolerant, id, worlds, threads, 0,
+                                                2.0 * (1ull << 30), ToleranceSettings());
+                                     })
+            ->UseRealTime();
       }
     }
   }
@@ -363,57 +385,68 @@ Accuracy MujocoAccuracy(const std::string& id, std::size_t worlds) {
   return a;
 }
 
-Accuracy ManyworldsAccuracy(const std::string& id, std::size_t worlds) {
+// Each of `settings`' batches against the same fine reference, in order.
+std::vector<Accuracy> ManyworldsAccuracy(const std::string& id, std::size_t worlds,
+                                         const std::vector<StepSettings>& settings) {
   const std::vector<Observable> observables = SceneObservables(id);
   const Scene scene = MakeReferenceScene(id);
   const SceneActions actions(id);
-  const StepSettings settings;
+  const StepSettings coarse;
   StepSettings fine_settings;
   fine_settings.substeps = kFineSubsteps;  // dt/16 each, forces held for all 16
-  fine_settings.velocity_iterations = 4 * settings.velocity_iterations;
-  fine_settings.position_iterations = 4 * settings.position_iterations;
-  Batch batch(scene, worlds, BatchOptions{.threads = 1});
+  fine_settings.velocity_iterations = 4 * coarse.velocity_iterations;
+  fine_settings.position_iterations = 4 * coarse.position_iterations;
+  std::vector<std::unique_ptr<Batch>> batches;
+  for (std::size_t i = 0; i < settings.size(); ++i) {
+    batches.push_back(std::make_unique<Batch>(scene, worlds, BatchOptions{.threads = 1}));
+  }
   std::vector<std::unique_ptr<reference::World<double>>> fine;
   for (std::size_t w = 0; w < worlds; ++w) {
     fine.push_back(std::make_unique<reference::World<double>>(scene));
   }
-  const std::size_t floats_per_world = batch.body_count() * kStateFloatsPerBody;
+  const std::size_t floats_per_world = scene.bodies().size() * kStateFloatsPerBody;
   std::vector<float> state(worlds * floats_per_world);
-  Accuracy a;
-  a.worlds = worlds;
+  std::vector<Accuracy> accuracy(settings.size());
+  for (Accuracy& a : accuracy) a.worlds = worlds;
   for (std::uint64_t step = 0; step < kFiveSeconds; ++step) {
-    actions.Apply(batch, step, kSceneSeed);
-    batch.Step(settings);
+    for (std::size_t i = 0; i < batches.size(); ++i) {
+      actions.Apply(*batches[i], step, kSceneSeed);
+      batches[i]->Step(settings[i]);
+    }
     for (std::size_t w = 0; w < worlds; ++w) {
       actions.ApplyTo(*fine[w], w, step, kSceneSeed);
       fine[w]->Step(fine_settings);
     }
     if (step + 1 != kOneSecond && step + 1 != kFiveSeconds) continue;
-    batch.GetState(state);
-    for (std::size_t w = 0; w < worlds; ++w) {
-      const float* s = &state[w * floats_per_world];
-      const auto pose_coarse = [&](int b) {
-        const float* body = s + std::size_t(b) * kStateFloatsPerBody;
-        BodyPose pose{};
-        for (int i = 0; i < 3; ++i) pose.position[i] = body[i];
-        for (int i = 0; i < 4; ++i) pose.rotation[i] = body[3 + i];
-        return pose;
-      };
-      const auto pose_fine = [&](int b) {
-        const reference::Body<double>& body = fine[w]->body(std::size_t(b));
-        return BodyPose{{body.position.x(), body.position.y(), body.position.z()},
-                        {body.rotation.x(), body.rotation.y(), body.rotation.z(),
-                         body.rotation.w()}};
-      };
-      Accumulate(a, observables, step + 1, w, Observe(id, pose_coarse), Observe(id, pose_fine));
+    for (std::size_t i = 0; i < batches.size(); ++i) {
+      batches[i]->GetState(state);
+      for (std::size_t w = 0; w < worlds; ++w) {
+        const float* s = &state[w * floats_per_world];
+        const auto pose_coarse = [&](int b) {
+          const float* body = s + std::size_t(b) * kStateFloatsPerBody;
+          BodyPose pose{};
+          for (int k = 0; k < 3; ++k) pose.position[k] = body[k];
+          for (int k = 0; k < 4; ++k) pose.rotation[k] = body[3 + k];
+          return pose;
+        };
+        const auto pose_fine = [&](int b) {
+          const reference::Body<double>& body = fine[w]->body(std::size_t(b));
+          return BodyPose{{body.position.x(), body.position.y(), body.position.z()},
+                          {body.rotation.x(), body.rotation.y(), body.rotation.z(),
+                           body.rotation.w()}};
+        };
+        Accumulate(accuracy[i], observables, step + 1, w, Observe(id, pose_coarse),
+                   Observe(id, pose_fine));
+      }
     }
   }
-  return a;
+  return accuracy;
 }
 
 // One line per observable and time: both engines' RMS errors and world 0's
 // values (a vector quantity as its length).
-void PrintAccuracyRows(const std::string& model, const Accuracy& m, const Accuracy& o) {
+void PrintAccuracyRows(const std::string& model, const Accuracy& m, const Accuracy& o,
+                       const Accuracy& tolerant) {
   const std::vector<Observable> observables = SceneObservables(model);
   for (const bool five : {false, true}) {
     std::size_t at = 0;  // index of the observable's first value
@@ -427,8 +460,9 @@ void PrintAccuracyRows(const std::string& model, const Accuracy& m, const Accura
         for (std::size_t c = 0; c < observables[i].components; ++c) sum += v[at + c] * v[at + c];
         return observables[i].components == 1 ? v[at] : std::sqrt(sum);
       };
-      std::printf("%-14s %-20s %3ds %14.3e %14.3e %12.4g %12.4g\n", model.c_str(),
-                  observables[i].name.c_str(), five ? 5 : 1, rms(m), rms(o), value(m), value(o));
+      std::printf("%-14s %-20s %3ds %14.3e %14.3e %14.3e %12.4g %12.4g\n", model.c_str(),
+                  observables[i].name.c_str(), five ? 5 : 1, rms(m), rms(o), rms(tolerant),
+                  value(m), value(o));
       at += observables[i].components;
     }
   }
@@ -444,18 +478,22 @@ bool RunAccuracy(std::size_t worlds) {
       "  MuJoCo:     benchmark model (dt 1/60) vs the same model at dt/16, tolerance 1e-12, 400 "
       "iterations\n"
       "  manyworlds: Batch, float, dt 1/60, 10 + 2 iterations vs reference::World<double>, 16 "
-      "substeps of dt/16, 40 + 8 iterations\n",
-      worlds - 1, static_cast<unsigned long long>(kSceneSeed));
-  std::printf("%-14s %-20s %4s %14s %14s %12s %12s\n", "MuJoCo model", "quantity", "t",
-              "MuJoCo err", "ours err", "MuJoCo value", "ours value");
+      "substeps of dt/16, 40 + 8 iterations; 'ours tol err': the same with velocity_tolerance "
+      "%g\n",
+      worlds - 1, static_cast<unsigned long long>(kSceneSeed), double(kBenchVelocityTolerance));
+  std::printf("%-14s %-20s %4s %14s %14s %14s %12s %12s\n", "MuJoCo model", "quantity", "t",
+              "MuJoCo err", "ours err", "ours tol err", "MuJoCo value", "ours value");
   bool finite = true;
   for (const std::string& id : MujocoSceneIds()) {
-    const Accuracy ours = ManyworldsAccuracy(id, worlds);
-    finite = finite && ours.finite;
+    const std::vector<Accuracy> batches =
+        ManyworldsAccuracy(id, worlds, {StepSettings{}, ToleranceSettings()});
+    const Accuracy& ours = batches[0];
+    const Accuracy& tolerant = batches[1];
+    finite = finite && ours.finite && tolerant.finite;
     for (const std::string& model : MujocoModelsOf(id)) {
       const Accuracy mujoco = MujocoAccuracy(model, worlds);
       finite = finite && mujoco.finite;
-      PrintAccuracyRows(model, mujoco, ours);
+      PrintAccuracyRows(model, mujoco, ours, tolerant);
     }
   }
   std::fflush(stdout);
@@ -502,6 +540,30 @@ void PrintTable(const RecordingReporter& r) {
   for (const std::string& id : MujocoThroughputSceneIds()) {
     for (const std::string& model : MujocoModelsOf(id)) {
       for (const std::size_t worlds : kWorldCounts) PrintRateRow(r, model, id, worlds);
+    }
+  }
+  std::printf(
+      "\nthe batch with velocity_tolerance %g (each world's velocity iterations stop after a "
+      "pass that changed its velocities by at most that), world-steps/s (median); 'vs MuJoCo' = "
+      "batch_tolerance / MuJoCo, 'vs default' = batch_tolerance / batch\n",
+      double(kBenchVelocityTolerance));
+  std::printf("%-14s %7s %14s %11s %11s %14s %11s %11s\n", "MuJoCo model", "worlds",
+              "tolerance 1T", "vs MuJoCo", "vs default", "tolerance 2T", "vs MuJoCo",
+              "vs default");
+  for (const std::string& id : MujocoThroughputSceneIds()) {
+    for (const std::string& model : MujocoModelsOf(id)) {
+      for (const std::size_t worlds : kWorldCounts) {
+        const auto rate = [&](const char* engine, const std::string& scene, int threads) {
+          return r.WorldStepsPerSecond(Name(engine, scene, worlds, threads), worlds);
+        };
+        const double t1 = rate("batch_tolerance", id, 1), t2 = rate("batch_tolerance", id, 2);
+        if (std::isnan(t1) && std::isnan(t2)) continue;
+        std::printf("%-14s %7zu %14s %11s %11s %14s %11s %11s\n", model.c_str(), worlds,
+                    Figure(t1, "%.4g").c_str(), Figure(t1 / rate("mujoco", model, 1), "%.1fx").c_str(),
+                    Figure(t1 / rate("batch", id, 1), "%.2fx").c_str(), Figure(t2, "%.4g").c_str(),
+                    Figure(t2 / rate("mujoco", model, 2), "%.1fx").c_str(),
+                    Figure(t2 / rate("batch", id, 2), "%.2fx").c_str());
+      }
     }
   }
   std::fflush(stdout);

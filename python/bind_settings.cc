@@ -217,6 +217,10 @@ void BindStepAndBatchOptions(py::module_& m) {
   step.def_readwrite("delta_time", &StepSettings::delta_time, "s, of the whole step")
       .def_readwrite("substeps", &StepSettings::substeps)
       .def_readwrite("velocity_iterations", &StepSettings::velocity_iterations)
+      .def_readwrite("velocity_tolerance", &StepSettings::velocity_tolerance,
+                     "0 (default): every velocity iteration, as Jolt. > 0: a world stops its "
+                     "velocity iterations after the first pass that changed no velocity "
+                     "component of its dynamic bodies by more than this (m/s, rad/s)")
       .def_readwrite("position_iterations", &StepSettings::position_iterations)
       .def_readwrite("baumgarte", &StepSettings::baumgarte)
       .def_readwrite("warm_start", &StepSettings::warm_start);

@@ -622,13 +622,36 @@ class World {
       c.WarmStartVelocityConstraint(body1, body2, warm_start_ratio);
     });
     warm_start_contacts();
+    // StepSettings::velocity_tolerance: stop after the first pass that
+    // changed no velocity component of a dynamic body by more than it.
+    const T tolerance = T(settings.velocity_tolerance);
+    std::vector<Vec3<T>> before(2 * bodies_.size());
+    // Every component within the tolerance (false for a NaN change).
+    const auto converged = [&] {
+      for (std::size_t b = 0; b < bodies_.size(); ++b) {
+        if (!bodies_[b].IsDynamic()) continue;
+        const Vec3<T> linear = bodies_[b].linear_velocity - before[2 * b];
+        const Vec3<T> angular = bodies_[b].angular_velocity - before[2 * b + 1];
+        for (int i = 0; i < 3; ++i) {
+          for (const T d : {linear[i], angular[i]}) {
+            if (!(d <= tolerance && d >= -tolerance)) return false;
+          }
+        }
+      }
+      return true;
+    };
     for (int iteration = 0; iteration < settings.velocity_iterations; ++iteration) {
+      for (std::size_t b = 0; b < bodies_.size() && tolerance > T(0); ++b) {
+        before[2 * b] = bodies_[b].linear_velocity;
+        before[2 * b + 1] = bodies_[b].angular_velocity;
+      }
       bool applied = false;
       for_each_solved([&](auto& c, Body<T>& body1, Body<T>& body2) {
         applied |= c.SolveVelocityConstraint(body1, body2, dt);
       });
       applied |= solve_contact_velocities();
       if (!applied) break;
+      if (tolerance > T(0) && converged()) break;
     }
 
     Integrate(dt);
@@ -679,7 +702,9 @@ World<T>::World(const Scene& scene) {
 template <class T>
 void World<T>::Step(const StepSettings& settings) {
   if (!(settings.delta_time > 0.0f) || settings.substeps < 1 ||
-      settings.velocity_iterations < 0 || settings.position_iterations < 0) {
+      settings.velocity_iterations < 0 || settings.position_iterations < 0 ||
+      !(settings.velocity_tolerance >= 0.0f && std::isfinite(settings.velocity_tolerance)) ||
+      (settings.solver == JointSolver::kExact && settings.velocity_tolerance != 0.0f)) {
     throw std::invalid_argument("reference::World::Step: invalid step settings");
   }
   for (const float value :

@@ -4,7 +4,8 @@
 // tools/progress.cc.
 //
 //   manyworlds run --scene cartpole --worlds 4096 --steps 1000 [--threads N]
-//                  [--substeps N] [--velocity-iterations N] [--position-iterations N]
+//                  [--substeps N] [--velocity-iterations N] [--velocity-tolerance V]
+//                  [--position-iterations N]
 //                  [--warmup N] [--seed N] [--mass-range-limit R]
 //                  [--record FILE [--record-worlds 0,1,7]]
 //   manyworlds plan --scene ID
@@ -49,7 +50,8 @@ using tools::UsageError;
 constexpr const char* kUsage =
     "usage:\n"
     "  manyworlds run --scene ID [--worlds N] [--steps N] [--threads N] [--substeps N]\n"
-    "                 [--velocity-iterations N] [--position-iterations N] [--warmup N]\n"
+    "                 [--velocity-iterations N] [--velocity-tolerance V]\n"
+    "                 [--position-iterations N] [--warmup N]\n"
     "                 [--seed N] [--mass-range-limit R] [--record FILE [--record-worlds LIST]]\n"
     "                 [--solver gauss-seidel|exact [--exact-tolerance M]\n"
     "                 [--geometric-stiffness F]] [--profile]\n"
@@ -59,6 +61,9 @@ constexpr const char* kUsage =
     "      seed 1 for the actions; --mass-range-limit R >= 1 first raises every body\n"
     "      lighter than 1/R of the heaviest body joined to it through dynamic\n"
     "      bodies, LimitMassRange, docs/stability.md; 0 = off, the default).\n"
+    "      --velocity-tolerance V > 0 lets each world stop its velocity iterations after\n"
+    "      the first pass that changed no body's velocity by more than V m/s or rad/s\n"
+    "      (StepSettings::velocity_tolerance; default 0: every pass, as Jolt).\n"
     "      --solver exact solves all equality rows of a scene at once (ball, hinge,\n"
     "      fixed, slider, gear, rack and pinion, swing-twist; motors and limits\n"
     "      around it; docs/stepping.md):\n"

@@ -43,7 +43,8 @@ std::string MassRangeLimitOf(const Options& options, Scene& scene) {
 Options RunOptions(int argc, char** argv) {
   return Options(argc, argv,
                  {"--scene", "--worlds", "--steps", "--threads", "--substeps",
-                  "--velocity-iterations", "--position-iterations", "--warmup", "--seed",
+                  "--velocity-iterations", "--velocity-tolerance", "--position-iterations",
+                  "--warmup", "--seed",
                   "--mass-range-limit", "--solver", "--exact-tolerance",
                   "--geometric-stiffness", kRecordOption,
                   kRecordWorldsOption},
@@ -97,6 +98,10 @@ RunSetup ParseRunSetup(const Options& options) {
     }
     return float(value);
   };
+  if (options.Has("--velocity-tolerance")) {
+    setup.settings.velocity_tolerance =
+        real("--velocity-tolerance", 1e6, true, "a velocity in m/s and rad/s in [0, 1e6]");
+  }
   if (options.Has("--exact-tolerance")) {
     setup.settings.exact_tolerance = real("--exact-tolerance", 1.0, false, "a length in m in (0, 1]");
   }

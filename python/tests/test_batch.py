@@ -14,10 +14,10 @@ CART, POLE = mw.reference_scene.CART, mw.reference_scene.POLE
 RAIL, POLE_HINGE = mw.reference_scene.RAIL, mw.reference_scene.POLE_HINGE
 
 
-def step_with_forces(batch, forces_per_step):
+def step_with_forces(batch, forces_per_step, settings=None):
     for forces in forces_per_step:
         batch.set_body_forces(CART, forces)
-        batch.step()
+        batch.step(settings if settings is not None else mw.StepSettings())
 
 
 def test_properties(cartpole):
@@ -223,6 +223,36 @@ def test_a_world_given_anothers_state_and_solver_state_continues_as_it(cartpole)
         cartpole.set_solver_state(copy, impulses[:15])
     with pytest.raises((IndexError, ValueError)):
         cartpole.get_solver_state(WORLDS)
+
+
+def test_velocity_tolerance_stops_each_world_on_its_own():
+    """A tolerance above every pass's change stops every world after one
+    velocity pass: the same bits as velocity_iterations=1. A tolerance of
+    1e-3 m/s runs more passes than that and stays near the default's ten:
+    each of the passes it leaves out changes a cartpole's velocities by less
+    than 1e-3 m/s, and they shrink about tenfold per pass, so over 20 steps of
+    1/60 s the positions part by less than 20 x 1.2e-3 / 60 = 4e-4 m (measured:
+    2.7e-6 m). Bad tolerances are refused naming the field, and a refused
+    step changes nothing."""
+    rng = np.random.default_rng(5)
+    forces = [random_cart_forces(rng, WORLDS) for _ in range(20)]
+    scene = mw.make_scene("cartpole")
+    one, loose, default, tolerant = (mw.Batch(scene, WORLDS, threads=1) for _ in range(4))
+    step_with_forces(one, forces, mw.StepSettings(velocity_iterations=1))
+    step_with_forces(loose, forces, mw.StepSettings(velocity_tolerance=1e30))
+    step_with_forces(default, forces, mw.StepSettings())
+    step_with_forces(tolerant, forces, mw.StepSettings(velocity_tolerance=1e-3))
+    assert_same_bits(loose.get_state(), one.get_state())
+    assert not np.array_equal(tolerant.get_state(), one.get_state())
+    positions = (slice(None), slice(None), slice(0, 3))
+    assert np.max(np.abs(tolerant.get_state()[positions] - default.get_state()[positions])) < 4e-4
+    before = default.get_state()
+    for bad in (-1.0, np.nan, np.inf):
+        with pytest.raises(mw.SceneError, match="velocity_tolerance"):
+            default.step(mw.StepSettings(velocity_tolerance=bad))
+    with pytest.raises(mw.SceneError, match="velocity_tolerance"):
+        default.step(mw.StepSettings(velocity_tolerance=1e-3, solver=mw.JointSolver.EXACT))
+    assert_same_bits(default.get_state(), before)
 
 
 def test_snapshot_restore_is_exact(cartpole):

@@ -424,6 +424,9 @@ StepSettings Settings(FuzzedDataProvider& in) {
     s.min_velocity_for_restitution = Float(in, 0, 5);
     s.speculative_contacts_from_velocity = in.ConsumeBool();
   }
+  // Each world's own stop, snapshot and restore (negative or not finite:
+  // refused).
+  if (in.ConsumeBool()) s.velocity_tolerance = Float(in, 0, 0.1f);
   return s;
 }
 
