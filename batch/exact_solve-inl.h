@@ -39,6 +39,7 @@
 #include "batch/exact_plan.h"
 #include "batch/exact_rows-inl.h"
 #include "batch/exact_system-inl.h"
+#include "batch/velocity_convergence-inl.h"
 #include "kernels/lane_math-inl.h"
 #include "kernels/point-inl.h"
 
@@ -277,7 +278,9 @@ void NewtonStep(const StepPlan& plan, std::byte* block, ExactScratch& scratch, V
 // with the geometric stiffness `stiffness` * (pull) (Inertia). With
 // inequality rows (motors, friction, limits; batch/exact_inequality_rows-inl.h)
 // `iterations` passes of block Gauss-Seidel around the exact solve, which
-// factors K once and ends with the equality rows exact. Contacts are
+// factors K once and ends with the equality rows exact; with a velocity
+// tolerance (`convergence`, or nullptr) each world stops after the first pass
+// that changed its velocities by at most it (batch/velocity_convergence-inl.h). Contacts are
 // inequality rows too: `contacts` is a ContactPhases (step_kernels.cc) set
 // up before the joints' inequality rows, warm-started after them, and whose
 // velocity pass follows theirs in every pass (docs/contacts.md).
@@ -288,7 +291,7 @@ void NewtonStep(const StepPlan& plan, std::byte* block, ExactScratch& scratch, V
 template <class Visit, class Contacts>
 void ExactSolveVelocity(const StepPlan& plan, std::byte* block, ExactScratch& scratch,
                         float stiffness, const StepScalars& step, int iterations,
-                        Visit&& visit, Contacts&& contacts) {
+                        VelocityConvergence* convergence, Visit&& visit, Contacts&& contacts) {
   const ExactSolvePlan& exact = plan.exact;
   exact::HingeTurns(plan, block);
   exact::LeverArms(plan, block);
@@ -303,13 +306,16 @@ void ExactSolveVelocity(const StepPlan& plan, std::byte* block, ExactScratch& sc
     exact::InequalitySetupAndWarmStart(ConstraintInBlock(plan, i, block), step);
   }
   contacts.WarmStart();
+  if (convergence) convergence->BeforePass();
   exact::VelocityRhs(plan, block, scratch, visit);
   exact::Factor(exact, scratch, visit);
   exact::Solve(exact, scratch);
   exact::ApplyVelocityImpulses(plan, block, scratch, false, visit);
   if (exact.inequality.empty() && plan.contacts.empty()) return;
+  if (convergence && convergence->AfterPass()) return;
   const auto no_visit = [] {};
   for (int pass = 1; pass < iterations; ++pass) {
+    if (convergence) convergence->BeforePass();
     for (std::size_t i : exact.inequality) {
       exact::InequalitySolveVelocity(ConstraintInBlock(plan, i, block));
     }
@@ -317,7 +323,9 @@ void ExactSolveVelocity(const StepPlan& plan, std::byte* block, ExactScratch& sc
     exact::VelocityRhs(plan, block, scratch, no_visit);
     exact::Solve(exact, scratch);
     exact::ApplyVelocityImpulses(plan, block, scratch, true, no_visit);
+    if (convergence && convergence->AfterPass()) break;
   }
+  if (convergence) convergence->Finish();
 }
 
 // Position phase: Newton steps until each world's groups are within

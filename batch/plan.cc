@@ -417,11 +417,6 @@ void CheckStepSettings(const StepSettings& s, const StepPlan& plan) {
     Refuse(what, "velocity_tolerance",
            "must be finite and >= 0 (got " + ValueText(s.velocity_tolerance) + ")");
   }
-  if (s.solver == JointSolver::kExact && s.velocity_tolerance != 0.0f) {
-    Refuse(what, "velocity_tolerance",
-           "must be 0 with the exact solver: it stops Gauss-Seidel's passes (got " +
-               ValueText(s.velocity_tolerance) + ")");
-  }
   if (s.solver == JointSolver::kExact && !plan.exact.available()) {
     Refuse(what, "solver", std::string("is exact, but ") + plan.exact.unavailable);
   }

@@ -269,10 +269,17 @@ bool StepBlockWith(const StepPlan& plan, std::byte* block, const std::byte* next
     }
     clock.Lap(StepPhase::kForces);
 
+    // With a velocity tolerance each world stops its velocity passes on its
+    // own (batch/velocity_convergence-inl.h); without, every pass runs.
+    std::optional<VelocityConvergence> convergence;
+    if (params.velocity_tolerance > 0.0f && solved_count != 0) {
+      convergence.emplace(plan, block, params.velocity_tolerance, convergence_scratch);
+    }
     if (exact) {
       ExactSolveVelocity(plan, block, scratch,
                          substep == 0 ? params.exact_first_stiffness : params.exact_stiffness,
-                         step, params.velocity_iterations, [&] { prefetch.Visit(); },
+                         step, params.velocity_iterations,
+                         convergence ? &*convergence : nullptr, [&] { prefetch.Visit(); },
                          ContactPhases<decltype(for_each_contact_of_exact)>{
                              for_each_contact_of_exact, contact_scalars, ratio});
       clock.Lap(StepPhase::kVelocity);
@@ -283,12 +290,6 @@ bool StepBlockWith(const StepPlan& plan, std::byte* block, const std::byte* next
       for_each_constraint([&](const ConstraintBlock& c) { WarmStartConstraint(c, step); });
       for_each_contact([&](const ContactBlock& c) { ContactWarmStart(c, ratio); });
       clock.Lap(StepPhase::kWarmStart);
-      // With a velocity tolerance each world stops on its own
-      // (batch/velocity_convergence-inl.h); without, Jolt's passes.
-      std::optional<VelocityConvergence> convergence;
-      if (params.velocity_tolerance > 0.0f) {
-        convergence.emplace(plan, block, params.velocity_tolerance, convergence_scratch);
-      }
       for (int iteration = 0; iteration < params.velocity_iterations; ++iteration) {
         if (convergence) convergence->BeforePass();
         bool applied = false;

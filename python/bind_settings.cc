@@ -220,7 +220,8 @@ void BindStepAndBatchOptions(py::module_& m) {
       .def_readwrite("velocity_tolerance", &StepSettings::velocity_tolerance,
                      "0 (default): every velocity iteration, as Jolt. > 0: a world stops its "
                      "velocity iterations after the first pass that changed no velocity "
-                     "component of its dynamic bodies by more than this (m/s, rad/s)")
+                     "component of its dynamic bodies by more than this (m/s, rad/s); with "
+                     "JointSolver.EXACT, of the passes around its joints")
       .def_readwrite("position_iterations", &StepSettings::position_iterations)
       .def_readwrite("baumgarte", &StepSettings::baumgarte)
       .def_readwrite("warm_start", &StepSettings::warm_start);

@@ -525,6 +525,33 @@ class World {
       return moved;
     };
 
+    // StepSettings::velocity_tolerance: the velocity passes stop after the
+    // first pass that changed no velocity component of a dynamic body by
+    // more than it (Gauss-Seidel's passes and the exact solve's).
+    const T tolerance = T(settings.velocity_tolerance);
+    std::vector<Vec3<T>> before(2 * bodies_.size());
+    // Every component within the tolerance (false for a NaN change).
+    const auto converged = [&] {
+      for (std::size_t b = 0; b < bodies_.size(); ++b) {
+        if (!bodies_[b].IsDynamic()) continue;
+        const Vec3<T> linear = bodies_[b].linear_velocity - before[2 * b];
+        const Vec3<T> angular = bodies_[b].angular_velocity - before[2 * b + 1];
+        for (int i = 0; i < 3; ++i) {
+          for (const T d : {linear[i], angular[i]}) {
+            if (!(d <= tolerance && d >= -tolerance)) return false;
+          }
+        }
+      }
+      return true;
+    };
+    const auto remember_velocities = [&] {
+      for (std::size_t b = 0; b < bodies_.size() && tolerance > T(0); ++b) {
+        before[2 * b] = bodies_[b].linear_velocity;
+        before[2 * b + 1] = bodies_[b].angular_velocity;
+      }
+    };
+    const auto within_tolerance = [&] { return tolerance > T(0) && converged(); };
+
     if (settings.solver == JointSolver::kExact && !constraints_.empty()) {
       ExactJointSolve<T> exact =
           ExactSolve(T(settings.exact_geometric_stiffness) * dt * stiffness_ratio);
@@ -579,14 +606,17 @@ class World {
         return false;
       });
       warm_start_contacts();
+      remember_velocities();
       exact.SolveVelocity();
-      if (!bounded.empty() || !contacts_.empty()) {
+      if ((!bounded.empty() || !contacts_.empty()) && !within_tolerance()) {
         for (int pass = 1; pass < settings.velocity_iterations; ++pass) {
+          remember_velocities();
           for_each_bounded([&](auto& c, Body<T>& body1, Body<T>& body2) {
             return c.SolveInequalityVelocity(body1, body2, dt);
           });
           solve_contact_velocities();
           exact.SolveVelocity(true);
+          if (within_tolerance()) break;
         }
       }
       Integrate(dt);
@@ -622,36 +652,14 @@ class World {
       c.WarmStartVelocityConstraint(body1, body2, warm_start_ratio);
     });
     warm_start_contacts();
-    // StepSettings::velocity_tolerance: stop after the first pass that
-    // changed no velocity component of a dynamic body by more than it.
-    const T tolerance = T(settings.velocity_tolerance);
-    std::vector<Vec3<T>> before(2 * bodies_.size());
-    // Every component within the tolerance (false for a NaN change).
-    const auto converged = [&] {
-      for (std::size_t b = 0; b < bodies_.size(); ++b) {
-        if (!bodies_[b].IsDynamic()) continue;
-        const Vec3<T> linear = bodies_[b].linear_velocity - before[2 * b];
-        const Vec3<T> angular = bodies_[b].angular_velocity - before[2 * b + 1];
-        for (int i = 0; i < 3; ++i) {
-          for (const T d : {linear[i], angular[i]}) {
-            if (!(d <= tolerance && d >= -tolerance)) return false;
-          }
-        }
-      }
-      return true;
-    };
     for (int iteration = 0; iteration < settings.velocity_iterations; ++iteration) {
-      for (std::size_t b = 0; b < bodies_.size() && tolerance > T(0); ++b) {
-        before[2 * b] = bodies_[b].linear_velocity;
-        before[2 * b + 1] = bodies_[b].angular_velocity;
-      }
+      remember_velocities();
       bool applied = false;
       for_each_solved([&](auto& c, Body<T>& body1, Body<T>& body2) {
         applied |= c.SolveVelocityConstraint(body1, body2, dt);
       });
       applied |= solve_contact_velocities();
-      if (!applied) break;
-      if (tolerance > T(0) && converged()) break;
+      if (!applied || within_tolerance()) break;
     }
 
     Integrate(dt);
@@ -703,8 +711,7 @@ template <class T>
 void World<T>::Step(const StepSettings& settings) {
   if (!(settings.delta_time > 0.0f) || settings.substeps < 1 ||
       settings.velocity_iterations < 0 || settings.position_iterations < 0 ||
-      !(settings.velocity_tolerance >= 0.0f && std::isfinite(settings.velocity_tolerance)) ||
-      (settings.solver == JointSolver::kExact && settings.velocity_tolerance != 0.0f)) {
+      !(settings.velocity_tolerance >= 0.0f && std::isfinite(settings.velocity_tolerance))) {
     throw std::invalid_argument("reference::World::Step: invalid step settings");
   }
   for (const float value :

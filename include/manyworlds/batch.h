@@ -117,7 +117,8 @@ struct StepSettings {
   // solver tolerance in spirit. Each world stops on its own, with the same
   // bits whatever its neighbours do; a block's passes end once every world
   // in it has stopped, which is where the time is saved (docs/stepping.md,
-  // "Velocity tolerance"). Gauss-Seidel only: must be 0 with kExact.
+  // "Velocity tolerance"). With kExact: the block Gauss-Seidel passes
+  // around the joints' exact solve (motors, limits, contacts).
   float velocity_tolerance = 0.0f;
   float baumgarte = 0.2f;
   bool warm_start = true;
