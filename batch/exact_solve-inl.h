@@ -280,7 +280,8 @@ void NewtonStep(const StepPlan& plan, std::byte* block, ExactScratch& scratch, V
 // `iterations` passes of block Gauss-Seidel around the exact solve, which
 // factors K once and ends with the equality rows exact; with a velocity
 // tolerance (`convergence`, or nullptr) each world stops after the first pass
-// that changed its velocities by at most it (batch/velocity_convergence-inl.h). Contacts are
+// from the second on that changed its velocities by at most it
+// (batch/velocity_convergence-inl.h). Contacts are
 // inequality rows too: `contacts` is a ContactPhases (step_kernels.cc) set
 // up before the joints' inequality rows, warm-started after them, and whose
 // velocity pass follows theirs in every pass (docs/contacts.md).
@@ -306,13 +307,14 @@ void ExactSolveVelocity(const StepPlan& plan, std::byte* block, ExactScratch& sc
     exact::InequalitySetupAndWarmStart(ConstraintInBlock(plan, i, block), step);
   }
   contacts.WarmStart();
-  if (convergence) convergence->BeforePass();
   exact::VelocityRhs(plan, block, scratch, visit);
   exact::Factor(exact, scratch, visit);
   exact::Solve(exact, scratch);
   exact::ApplyVelocityImpulses(plan, block, scratch, false, visit);
   if (exact.inequality.empty() && plan.contacts.empty()) return;
-  if (convergence && convergence->AfterPass()) return;
+  // The first pass solved the joints alone, so what it changed says nothing
+  // of the inequality rows: the tolerance is tested from the second pass on,
+  // the first that visits every row.
   const auto no_visit = [] {};
   for (int pass = 1; pass < iterations; ++pass) {
     if (convergence) convergence->BeforePass();

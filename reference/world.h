@@ -606,9 +606,10 @@ class World {
         return false;
       });
       warm_start_contacts();
-      remember_velocities();
       exact.SolveVelocity();
-      if ((!bounded.empty() || !contacts_.empty()) && !within_tolerance()) {
+      // The tolerance is tested from the second pass on, the first that
+      // visits the inequality rows.
+      if (!bounded.empty() || !contacts_.empty()) {
         for (int pass = 1; pass < settings.velocity_iterations; ++pass) {
           remember_velocities();
           for_each_bounded([&](auto& c, Body<T>& body1, Body<T>& body2) {
