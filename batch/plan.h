@@ -151,8 +151,9 @@ struct StepPlan {
   std::size_t block_bytes = 0;  // one block of kLaneWidth worlds
   bool any_dynamic = false;
   ExactSolvePlan exact;  // JointSolver::kExact
-  // Every array a Gauss-Seidel velocity pass writes, as block offsets of
-  // LaneArrays: first the dynamic bodies' linear and angular velocities
+  // Every array a velocity pass writes (Gauss-Seidel's, or the exact
+  // solve's around its joints), as block offsets of LaneArrays: first the
+  // dynamic bodies' linear and angular velocities
   // (body_velocity_arrays of them), then each constraint's solver state
   // (batch/constraint_state.h) and each contact's impulses. What a world
   // that has converged keeps (StepSettings::velocity_tolerance).

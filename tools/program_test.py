@@ -92,6 +92,10 @@ def case_errors():
                        "--threads", "'5000'", "from 0 to 4096")
     expect_usage_error(["run", "--scene", "cartpole", "--mass-range-limit", "0.5"],
                        "--mass-range-limit", "'0.5'", "0 (off)", "from 1 to 1e+30")
+    expect_usage_error(["run", "--scene", "cartpole", "--velocity-tolerance", "-1e-3"],
+                       "--velocity-tolerance", "'-1e-3'", "[0, 1e6]")
+    expect_usage_error(["run", "--scene", "cartpole", "--velocity-tolerance", "nan"],
+                       "--velocity-tolerance", "'nan'")
     expect_usage_error(["run", "--scene", "cartpole", "--frob", "3"],
                        "'--frob'", "'run'", "--scene, --worlds", "--mass-range-limit")
     expect_usage_error(["run", "--scene", "cartpole", "extra"], "'extra'", "--worlds")
@@ -278,6 +282,31 @@ def case_profile():
         fail(f"a run without --profile lists phases or failed: {plain.stdout!r}")
 
 
+def case_velocity_tolerance():
+    """--velocity-tolerance reaches the step: a tolerance above every change
+    stops every world after one velocity pass, so the state digest is that of
+    --velocity-iterations 1, and the report names the tolerance."""
+    args = ["run", "--scene", "cartpole", "--worlds", "64", "--steps", "20", "--threads", "1"]
+    tolerant = run(args + ["--velocity-tolerance", "1e6"])
+    one_pass = run(args + ["--velocity-iterations", "1"])
+    default = run(args)
+
+    def digest(result):
+        if result.returncode != 0:
+            fail(f"exit code {result.returncode}, stderr {result.stderr!r}")
+        found = re.search(r"^state digest: +([0-9a-f]+)", result.stdout, re.M)
+        if not found:
+            fail(f"no state digest in the report: {result.stdout!r}")
+        return found.group(1)
+
+    if not re.search(r"^velocity tolerance: +1e\+06 m/s and rad/s", tolerant.stdout, re.M):
+        fail(f"the report does not name the tolerance: {tolerant.stdout!r}")
+    if digest(tolerant) != digest(one_pass):
+        fail("a tolerance of 1e6 did not step as one velocity pass")
+    if digest(tolerant) == digest(default):
+        fail("one velocity pass gave the default's ten passes' state: nothing is tested")
+
+
 def mpirun(ranks, args, timeout=120):
     command = [os.environ["MPIEXEC"], "-n", str(ranks), "--oversubscribe", MANYWORLDS, *args]
     return subprocess.run(command, capture_output=True, text=True, timeout=timeout)
@@ -360,6 +389,7 @@ def case_mpirun():
 CASES = {
     "mpirun": case_mpirun,
     "profile": case_profile,
+    "velocity-tolerance": case_velocity_tolerance,
     "errors": case_errors,
     "unknown-scene": case_unknown_scene,
     "scenes": case_scenes,

@@ -102,11 +102,11 @@ void PrintRunReport(const Batch& batch, const SceneActions& actions, const RunFa
     std::printf("iterations:           %d velocity, %d position, %d substep(s), Baumgarte %g\n",
                 settings.velocity_iterations, settings.position_iterations, settings.substeps,
                 double(settings.baumgarte));
-    if (settings.velocity_tolerance > 0.0f) {
-      std::printf("velocity tolerance:   %g m/s and rad/s: a world's velocity iterations stop "
-                  "after a pass that changed its velocities by no more\n",
-                  double(settings.velocity_tolerance));
-    }
+  }
+  if (settings.velocity_tolerance > 0.0f) {
+    std::printf("velocity tolerance:   %g m/s and rad/s (a world's velocity passes stop after the "
+                "first that changed its velocities by no more)\n",
+                double(settings.velocity_tolerance));
   }
   std::printf("dt:                   %.6g s per step, gravity (%g, %g, %g) m/s^2\n",
               double(settings.delta_time), double(settings.gravity[0]),
