@@ -112,7 +112,9 @@ StepSettings FixedPasses(JointSolver solver, int passes, int position_iterations
 }
 
 // The largest change of any dynamic body's velocity component between two
-// steps' results, per world.
+// steps' results, per world, in float as the step computes it (|a - b|
+// rounded to float: in double a world whose change rounds onto the
+// tolerance would be on the other side of it).
 std::vector<double> LargestChange(const Scene& scene, const After& a, const After& b) {
   const std::size_t per_world = scene.bodies().size() * kStateFloatsPerBody;
   std::vector<double> change(kWorlds, 0.0);
@@ -121,7 +123,8 @@ std::vector<double> LargestChange(const Scene& scene, const After& a, const Afte
       if (scene.bodies()[body].motion_type != MotionType::kDynamic) continue;
       for (std::size_t i = 7; i < 13; ++i) {
         const std::size_t at = w * per_world + body * kStateFloatsPerBody + i;
-        change[w] = std::max(change[w], std::abs(double(a.bodies[at]) - double(b.bodies[at])));
+        const float difference = a.bodies[at] - b.bodies[at];
+        change[w] = std::max(change[w], double(std::abs(difference)));
       }
     }
   }
@@ -131,8 +134,8 @@ std::vector<double> LargestChange(const Scene& scene, const After& a, const Afte
 // Every world's velocities after 0 to kMaxPasses fixed passes from `start`
 // (with no position iterations a step's velocities are the velocity passes'
 // result), how much pass k changed world w's (changes[k][w]), a tolerance
-// the worlds meet at different passes (the median of the second pass's
-// changes) and the pass each world stops after with it.
+// the worlds meet at different passes (just above the median of the second
+// pass's changes) and the pass each world stops after with it.
 struct Passes {
   std::vector<After> velocities;
   std::vector<std::vector<double>> changes;
@@ -155,9 +158,14 @@ Passes MeasurePasses(const Scene& s, std::int64_t target, JointSolver solver,
   if (solver == JointSolver::kExact) {
     p.changes[1].assign(kWorlds, std::numeric_limits<double>::infinity());
   }
+  // Half-way between the median and the next larger change, so that no
+  // world's change sits on the tolerance.
   std::vector<double> second = p.changes[2];
-  std::nth_element(second.begin(), second.begin() + kWorlds / 2, second.end());
-  p.tolerance = float(second[kWorlds / 2]);
+  std::sort(second.begin(), second.end());
+  std::size_t above = kWorlds / 2 + 1;
+  while (above < kWorlds && second[above] == second[kWorlds / 2]) ++above;
+  p.tolerance = above < kWorlds ? float(0.5 * (second[kWorlds / 2] + second[above]))
+                                : float(2.0 * second[kWorlds / 2]);
   p.stop.assign(kWorlds, kMaxPasses);
   for (std::size_t w = 0; w < kWorlds; ++w) {
     for (int k = 1; k <= kMaxPasses; ++k) {
