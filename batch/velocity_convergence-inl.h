@@ -1,13 +1,14 @@
-// StepSettings::velocity_tolerance: each world of a block stops its
-// Gauss-Seidel velocity passes after the first pass that changed no velocity
-// component of its dynamic bodies by more than the tolerance,
+// StepSettings::velocity_tolerance: each world of a block stops its velocity
+// passes (Gauss-Seidel's, or the exact solve's around its joints from the
+// second on) after the first pass that changed no velocity component of its
+// dynamic bodies by more than the tolerance,
 //
 //   converged after pass k  <=>  max over dynamic bodies and components of
 //                                |v_k - v_(k-1)| <= tolerance
 //
-// (m/s and rad/s alike; v_0 is the velocity after the warm start). A NaN
-// change never converges: such a world runs every pass and the health check
-// flags it.
+// (m/s and rad/s alike, |v_k - v_(k-1)| rounded to float; v_(k-1) is the
+// velocity before the pass). A NaN change never converges: such a world runs
+// every pass and the health check flags it.
 //
 // Every lane of a block runs the same instructions, so a world that has
 // converged still runs the block's later passes. What it keeps is what it had
@@ -15,12 +16,13 @@
 // in it, every array a pass may write (its bodies' velocities and every
 // accumulated impulse, StepPlan::velocity_pass_arrays) into a snapshot, and
 // Finish puts the snapshot back (a pass after which every world has
-// converged ends the block's passes, so its worlds need no snapshot). So a world's result has the same bits
-// whatever its neighbours need, and the block's passes end as soon as every
-// world in it has converged (the padding lanes, whose bodies never move, in
-// their first pass). That early end is where the time is saved; the copies
-// cost a few loads and stores per array and chunk in the passes where some
-// world converges.
+// converged ends the block's passes, so its worlds need no snapshot). So a
+// world's result has the same bits whatever its neighbours need, and the
+// block's passes end as soon as every world in it has converged (the padding
+// lanes, whose bodies never move, in their first pass). That early end is
+// where the time is saved; the checks cost three loads and stores per
+// velocity array and chunk each pass, the copies a few per array and chunk in
+// the passes where some world converges.
 
 #if defined(MANYWORLDS_BATCH_VELOCITY_CONVERGENCE_INL_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef MANYWORLDS_BATCH_VELOCITY_CONVERGENCE_INL_H_
