@@ -20,7 +20,7 @@
 // world's result has the same bits whatever its neighbours need, and the
 // block's passes end as soon as every world in it has converged (the padding
 // lanes, whose bodies never move, in their first pass). That early end is
-// where the time is saved; the checks cost three loads and stores per
+// where the time is saved; the checks cost two loads and a store per
 // velocity array and chunk each pass, the copies a few per array and chunk in
 // the passes where some world converges.
 
