@@ -92,19 +92,19 @@ class VelocityConvergence {
         change = hn::Max(change, hn::Abs(hn::Sub(now, Load(before_[i], offset))));
         Store(now, before_[i], offset);
       }
-      const LaneMask was = hn::Ne(Load(converged_, offset), Zero());
+      const LaneMask was = LoadFlags(converged_, offset);
       // Le is false for a NaN change.
       const LaneMask now = hn::Or(was, hn::Le(change, tolerance));
       const LaneMask newly = hn::AndNot(was, now);
       any_new = any_new || AnyLane(newly);
-      Store(hn::IfThenElseZero(newly, Splat(1.0f)), newly_, offset);
-      Store(hn::IfThenElseZero(now, Splat(1.0f)), converged_, offset);
+      StoreFlags(newly, newly_, offset);
+      StoreFlags(now, converged_, offset);
       all = all && hn::AllTrue(LaneTag(), now);
     });
     any_converged_ = any_converged_ || any_new;
     if (all || !any_new) return all;
     ForEachChunk([&](std::size_t offset) {
-      const LaneMask newly = hn::Ne(Load(newly_, offset), Zero());
+      const LaneMask newly = LoadFlags(newly_, offset);
       if (!AnyLane(newly)) return;
       for (std::size_t i = 0; i < arrays_.size(); ++i) {
         Store(hn::IfThenElse(newly, Load(*arrays_[i], offset), Load(snapshot_[i], offset)),
@@ -121,8 +121,8 @@ class VelocityConvergence {
     ForEachChunk([&](std::size_t offset) {
       // Lanes that converged in the last pass took no snapshot: the newly_
       // mask of that pass leaves them as they are.
-      const LaneMask restore = hn::AndNot(hn::Ne(Load(newly_, offset), Zero()),
-                                          hn::Ne(Load(converged_, offset), Zero()));
+      const LaneMask restore =
+          hn::AndNot(LoadFlags(newly_, offset), LoadFlags(converged_, offset));
       if (!AnyLane(restore)) return;
       for (std::size_t i = 0; i < arrays_.size(); ++i) {
         Store(hn::IfThenElse(restore, Load(snapshot_[i], offset), Load(*arrays_[i], offset)),
@@ -137,8 +137,8 @@ class VelocityConvergence {
   std::vector<LaneArray*>& arrays_;
   std::vector<LaneArray>& before_;
   std::vector<LaneArray>& snapshot_;
-  LaneArray converged_{};  // 1 in the lanes that have converged
-  LaneArray newly_{};      // 1 in the lanes that converged in the last pass
+  LaneFlags converged_{};  // the lanes that have converged
+  LaneFlags newly_{};      // the lanes that converged in the last pass
   bool started_ = false;
   bool any_converged_ = false;
   bool restore_ = false;
