@@ -1,13 +1,16 @@
 // Two scenes with every constraint type and feature, out of plane, with
 // uneven bodies, shared by the tests that need more than the planar
 // reference scenes: scene_comparison_test.cc (every lane against the
-// scalar reference stepper) and joint_coordinate_kernels_test.cc (every
-// joint-coordinate type against the double read-out).
+// scalar reference stepper), joint_coordinate_kernels_test.cc (every
+// joint-coordinate type against the double read-out), solver_state_test.cc
+// and velocity_tolerance_test.cc.
 #pragma once
 
 #include <cstddef>
+#include <string>
 
 #include "manyworlds/scene.h"
+#include "manyworlds/scenes.h"
 
 namespace manyworlds::test_scenes {
 
@@ -453,6 +456,13 @@ inline Scene MoreTypesScene() {
   track.motor.spring = {SpringMode::kStiffnessAndDamping, 400.0f, 40.0f};
   scene.AddConstraint(track);
   return scene;
+}
+
+// "mixed", "more_types" or any id MakeScene takes.
+inline Scene SceneById(const std::string& id) {
+  if (id == "mixed") return MixedScene();
+  if (id == "more_types") return MoreTypesScene();
+  return MakeScene(id);
 }
 
 }  // namespace manyworlds::test_scenes

@@ -54,15 +54,6 @@ constexpr int kSteps = 300;
 constexpr std::size_t kWorlds = 20;  // two blocks, the second mostly padding
 constexpr std::uint64_t kSeed = 7;
 
-using test_scenes::MixedScene;
-using test_scenes::MoreTypesScene;
-
-Scene ComparisonScene(const std::string& id) {
-  if (id == "mixed") return MixedScene();
-  if (id == "more_types") return MoreTypesScene();
-  return MakeScene(id);
-}
-
 // Scenes whose worlds would all be alike without a kick: the two custom
 // scenes and the contact scenes (all but the walkers, whose motor targets
 // differ per world, have no actions; kicked, their worlds land, bounce,
@@ -127,7 +118,7 @@ bool ChecksSolverState(const std::string& scene) { return scene != "box-stack"; 
 constexpr double kTrajectoryTolerance = 64.0;
 
 TEST_P(SceneComparisonTest, EveryLaneMatchesTheReferenceStepByStep) {
-  const Scene scene = ComparisonScene(scene_id());
+  const Scene scene = test_scenes::SceneById(scene_id());
   const bool custom = scene_id() == "mixed" || scene_id() == "more_types";
   const SceneActions actions(custom ? "chain16" : scene_id());  // chain16: no actions
   Batch batch(scene, kWorlds, options());

@@ -35,12 +35,8 @@ namespace manyworlds {
 namespace {
 
 // Every constraint type, motors, limits, drives, paths, and contacts of
-// every pair kind.
-Scene TestScene(const std::string& id) {
-  if (id == "mixed") return test_scenes::MixedScene();
-  if (id == "more_types") return test_scenes::MoreTypesScene();
-  return MakeScene(id);
-}
+// every pair kind (mixed, more_types and reference scenes).
+using test_scenes::SceneById;
 
 class SolverStateTest : public ::testing::TestWithParam<std::string> {};
 
@@ -54,7 +50,7 @@ std::vector<float> SolverState(const Batch& batch, std::size_t world) {
 // steps and must then stay its exact copies for 60 more steps.
 TEST_P(SolverStateTest, AWorldGivenAnothersStateContinuesAsItBitForBit) {
   constexpr std::size_t kWorlds = 24, kSource = 2;
-  Batch batch(TestScene(GetParam()), kWorlds, BatchOptions{1});
+  Batch batch(SceneById(GetParam()), kWorlds, BatchOptions{1});
   KickEveryWorldDifferently(batch);
   const StepSettings settings;
   for (int step = 0; step < 40; ++step) batch.Step(settings);
@@ -84,7 +80,7 @@ TEST_P(SolverStateTest, AWorldGivenAnothersStateContinuesAsItBitForBit) {
 
 TEST_P(SolverStateTest, SettingOneWorldLeavesTheOthersAlone) {
   constexpr std::size_t kWorlds = 20;
-  Batch batch(TestScene(GetParam()), kWorlds, BatchOptions{1});
+  Batch batch(SceneById(GetParam()), kWorlds, BatchOptions{1});
   KickEveryWorldDifferently(batch);
   for (int step = 0; step < 30; ++step) batch.Step({});
   std::vector<std::vector<float>> before;
@@ -107,7 +103,7 @@ TEST_P(SolverStateTest, SettingOneWorldLeavesTheOthersAlone) {
 }
 
 TEST_P(SolverStateTest, TheReferenceHasTheSameLayoutAndGivesBackWhatItWasGiven) {
-  Batch batch(TestScene(GetParam()), 16, BatchOptions{1});
+  Batch batch(SceneById(GetParam()), 16, BatchOptions{1});
   KickEveryWorldDifferently(batch);
   for (int step = 0; step < 30; ++step) batch.Step({});
   reference::World<float> world(batch.scene());

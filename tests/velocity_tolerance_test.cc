@@ -49,40 +49,37 @@ namespace {
 constexpr std::size_t kWorlds = 20;
 constexpr int kMaxPasses = 10;
 
-Scene TestScene(const std::string& id) {
-  if (id == "more_types") return test_scenes::MoreTypesScene();
-  return MakeScene(id);
-}
-
-// Where every world starts its step from: kicked worlds after 20 steps, with
-// their bodies and solver states (the impulses the passes warm-start from).
-struct Start {
+// Every world's bodies and solver state (the impulses the passes
+// warm-start from).
+struct Worlds {
   std::vector<float> bodies;
   std::vector<std::vector<float>> solver;
 };
 
+Worlds ReadWorlds(const Batch& batch) {
+  Worlds worlds;
+  worlds.bodies.resize(kWorlds * batch.body_count() * kStateFloatsPerBody);
+  batch.GetState(worlds.bodies);
+  for (std::size_t w = 0; w < kWorlds; ++w) {
+    worlds.solver.emplace_back(batch.SolverStateSize());
+    batch.GetSolverState(w, worlds.solver.back());
+  }
+  return worlds;
+}
+
+// Where every world starts its step from: kicked worlds after 20 steps.
+using Start = Worlds;
 Start MakeStart(const Scene& scene, std::int64_t target) {
   BatchOptions options{1};
   options.target = target;
   Batch batch(scene, kWorlds, options);
   KickEveryWorldDifferently(batch);
   for (int step = 0; step < 20; ++step) batch.Step({});
-  Start start;
-  start.bodies.resize(kWorlds * batch.body_count() * kStateFloatsPerBody);
-  batch.GetState(start.bodies);
-  for (std::size_t w = 0; w < kWorlds; ++w) {
-    start.solver.emplace_back(batch.SolverStateSize());
-    batch.GetSolverState(w, start.solver.back());
-  }
-  return start;
+  return ReadWorlds(batch);
 }
 
-// Every world's bodies and solver state after one step from `start`.
-struct After {
-  std::vector<float> bodies;
-  std::vector<std::vector<float>> solver;
-};
-
+// Every world after one step from `start`.
+using After = Worlds;
 After StepOnce(const Scene& scene, std::int64_t target, const Start& start,
                const StepSettings& settings) {
   BatchOptions options{1};
@@ -93,14 +90,7 @@ After StepOnce(const Scene& scene, std::int64_t target, const Start& start,
   batch.SetState(start.bodies);
   for (std::size_t w = 0; w < kWorlds; ++w) batch.SetSolverState(w, start.solver[w]);
   batch.Step(settings);
-  After after;
-  after.bodies.resize(start.bodies.size());
-  batch.GetState(after.bodies);
-  for (std::size_t w = 0; w < kWorlds; ++w) {
-    after.solver.emplace_back(batch.SolverStateSize());
-    batch.GetSolverState(w, after.solver.back());
-  }
-  return after;
+  return ReadWorlds(batch);
 }
 
 StepSettings FixedPasses(JointSolver solver, int passes, int position_iterations) {
@@ -182,7 +172,7 @@ class VelocityToleranceTest
     : public ::testing::TestWithParam<std::tuple<std::int64_t, std::string, JointSolver>> {
  protected:
   std::int64_t target() const { return std::get<0>(GetParam()); }
-  Scene scene() const { return TestScene(std::get<1>(GetParam())); }
+  Scene scene() const { return test_scenes::SceneById(std::get<1>(GetParam())); }
   JointSolver solver() const { return std::get<2>(GetParam()); }
   StepSettings Fixed(int passes, int position_iterations) const {
     return FixedPasses(solver(), passes, position_iterations);
