@@ -1,8 +1,10 @@
 // The rows the exact solve leaves to Gauss-Seidel: hinge and slider motors,
-// friction and limits, swing-twist limits and drives
-// (ExactSolvePlan::inequality). Their impulses are
-// bounded (a motor's force limits, a limit's one-sided push), which a linear
-// solve of K cannot respect, so they are solved as Jolt does, one row at a
+// friction and limits, swing-twist limits and drives, the cone row, and
+// every row of the distance, pulley, six-DOF and path constraints
+// (ExactSolvePlan::inequality, ExactSolvePlan::SolvedWhole). Their impulses
+// are bounded (a motor's force limits, a limit's one-sided push, a rope that
+// only pulls), which a linear solve of K cannot respect, or soft (springs),
+// so they are solved as Jolt does, one row at a
 // time with clamping, around the exact solve of the equality rows: block
 // Gauss-Seidel with one block holding every equality row (solved exactly by
 // the factors of K, which do not change within a velocity phase) and one
@@ -28,8 +30,12 @@
 //
 // The parts and their per-lane decisions are the Gauss-Seidel constraint's
 // own (batch/hinge_constraint-inl.h, batch/slider_constraint-inl.h,
-// batch/swing_twist_constraint-inl.h), so the rows behave as they do there;
-// only their neighbours differ.
+// batch/swing_twist_constraint-inl.h, batch/cone_constraint-inl.h; the
+// types solved whole call their constraint's verbs), so the rows behave as
+// they do there; only their neighbours differ. A rigid distance or pulley,
+// or a six-DOF or path's locked axes, move the bodies in every position
+// pass (their error is never exactly zero), so a scene with them takes all
+// of the position phase's passes.
 
 #if defined(MANYWORLDS_BATCH_EXACT_INEQUALITY_ROWS_INL_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef MANYWORLDS_BATCH_EXACT_INEQUALITY_ROWS_INL_H_
@@ -40,8 +46,13 @@
 
 #include <cstddef>
 
+#include "batch/cone_constraint-inl.h"
 #include "batch/constraint_block.h"
+#include "batch/distance_constraint-inl.h"
 #include "batch/hinge_constraint-inl.h"
+#include "batch/path_constraint-inl.h"
+#include "batch/pulley_constraint-inl.h"
+#include "batch/six_dof_constraint-inl.h"
 #include "batch/slider_constraint-inl.h"
 #include "batch/swing_twist_constraint-inl.h"
 
@@ -50,10 +61,40 @@ namespace manyworlds {
 namespace HWY_NAMESPACE {
 namespace exact {
 
+// Setup and warm start of a constraint solved whole
+// (ExactSolvePlan::SolvedWhole); false for the other types.
+inline bool WholeSetupAndWarmStart(const ConstraintBlock& c, const StepScalars& step) {
+  switch (c.plan.type) {
+    case ConstraintType::kDistance:
+      DistanceConstraintSetup(c, step);
+      DistanceConstraintWarmStart(c, step);
+      return true;
+    case ConstraintType::kPulley:
+      PulleyConstraintSetup(c, step);
+      PulleyConstraintWarmStart(c, step);
+      return true;
+    case ConstraintType::kSixDof:
+      SixDofConstraintSetup(c, step);
+      SixDofConstraintWarmStart(c, step);
+      return true;
+    case ConstraintType::kPath:
+      PathConstraintSetup(c, step);
+      PathConstraintWarmStart(c, step);
+      return true;
+    default: return false;
+  }
+}
+
 // Setup at the current poses and warm start (the hinge's angle and axes
 // are those HingeTurns wrote), drives before limits as Gauss-Seidel.
 inline void InequalitySetupAndWarmStart(const ConstraintBlock& c, const StepScalars& step) {
+  if (WholeSetupAndWarmStart(c, step)) return;
   const float ratio = step.warm_start_ratio;
+  if (c.plan.type == ConstraintType::kCone) {  // the point part is the exact solve's
+    ConeRotationProperties(c);
+    AngleWarmStart(c.bodies, c.Main<ConeConstraintLanes>().angle, ratio);
+    return;
+  }
   if (c.plan.type == ConstraintType::kSwingTwist) {
     auto& s = c.Main<SwingTwistConstraintLanes>();
     SwingTwistCalculateProperties(c.bodies, c.plan.swing_twist, s.frames, s.limits,
@@ -83,38 +124,64 @@ inline void InequalitySetupAndWarmStart(const ConstraintBlock& c, const StepScal
   }
 }
 
-// One velocity step of the motor (drives), then the limits.
-inline void InequalitySolveVelocity(const ConstraintBlock& c) {
+// One velocity step of the motor (drives), then the limits; every row of a
+// constraint solved whole. True if any lane applied an impulse.
+inline bool InequalitySolveVelocity(const ConstraintBlock& c) {
+  switch (c.plan.type) {
+    case ConstraintType::kDistance: return DistanceConstraintSolveVelocity(c);
+    case ConstraintType::kPulley: return PulleyConstraintSolveVelocity(c);
+    case ConstraintType::kSixDof: return SixDofConstraintSolveVelocity(c);
+    case ConstraintType::kPath: return PathConstraintSolveVelocity(c);
+    case ConstraintType::kCone: {
+      auto& s = c.Main<ConeConstraintLanes>();
+      return AngleSolveVelocity(c.bodies, s.geometry, s.angle);
+    }
+    default: break;
+  }
+  bool applied = false;
   if (c.plan.type == ConstraintType::kSwingTwist) {
-    if (c.plan.has_rotation_drives()) RotationDriveSolveVelocity(c);
-    SwingTwistSolveVelocity(c.bodies, c.plan.swing_twist,
-                            c.Main<SwingTwistConstraintLanes>().swing_twist);
-    return;
+    if (c.plan.has_rotation_drives()) applied |= RotationDriveSolveVelocity(c);
+    applied |= SwingTwistSolveVelocity(c.bodies, c.plan.swing_twist,
+                                       c.Main<SwingTwistConstraintLanes>().swing_twist);
+    return applied;
   }
   if (c.plan.type == ConstraintType::kHinge) {
     if (c.plan.has_motor()) {
       auto& motor = c.Motor<AngularMotorLanes>();
-      AngleSolveVelocity(c.bodies, motor.geometry, motor.part);
+      applied |= AngleSolveVelocity(c.bodies, motor.geometry, motor.part);
     }
     if (c.plan.has_limits()) {
       auto& limit = c.Limit<AngularLimitLanes>();
-      AngleSolveVelocity(c.bodies, limit.geometry, limit.part);
+      applied |= AngleSolveVelocity(c.bodies, limit.geometry, limit.part);
     }
-    return;
+    return applied;
   }
   if (c.plan.has_motor()) {
     auto& motor = c.Motor<LinearMotorLanes>();
-    AxisSolveVelocity(c.bodies, motor.geometry, motor.part);
+    applied |= AxisSolveVelocity(c.bodies, motor.geometry, motor.part);
   }
   if (c.plan.has_limits()) {
     auto& limit = c.Limit<LinearLimitLanes>();
-    AxisSolveVelocity(c.bodies, limit.geometry, limit.part);
+    applied |= AxisSolveVelocity(c.bodies, limit.geometry, limit.part);
   }
+  return applied;
 }
 
-// One Baumgarte step of a hard limit at the current poses; true if any lane
-// moved.
+// One Baumgarte step of a hard limit at the current poses (every row of a
+// constraint solved whole); true if any lane moved.
 inline bool LimitSolvePosition(const ConstraintBlock& c, const StepScalars& step) {
+  switch (c.plan.type) {
+    case ConstraintType::kDistance: return DistanceConstraintSolvePosition(c, step);
+    case ConstraintType::kPulley: return PulleyConstraintSolvePosition(c, step);
+    case ConstraintType::kSixDof: return SixDofConstraintSolvePosition(c, step);
+    case ConstraintType::kPath: return PathConstraintSolvePosition(c, step);
+    case ConstraintType::kCone: {
+      auto& s = c.Main<ConeConstraintLanes>();
+      ConeRotationProperties(c);
+      return AngleSolvePosition(c.bodies, s.geometry, s.angle, step.baumgarte);
+    }
+    default: break;
+  }
   if (c.plan.type == ConstraintType::kSwingTwist) {
     auto& s = c.Main<SwingTwistConstraintLanes>();
     return SwingTwistSolvePosition(c.bodies, c.plan.swing_twist, s.frames, s.limits,

@@ -34,8 +34,8 @@ bool ExactSolvePlan::only_points() const {
 
 namespace {
 
-// The row groups of each constraint type the exact solve takes; empty for
-// the others.
+// The row groups of each constraint type the exact solve factors; empty for
+// the types it leaves whole to Gauss-Seidel (SolvedWhole).
 std::vector<ExactRows> GroupsOf(ConstraintType type) {
   switch (type) {
     case ConstraintType::kPoint: return {ExactRows::kPoint};
@@ -45,22 +45,21 @@ std::vector<ExactRows> GroupsOf(ConstraintType type) {
     case ConstraintType::kGear: return {ExactRows::kGear};
     case ConstraintType::kRackAndPinion: return {ExactRows::kRackAndPinion};
     case ConstraintType::kSwingTwist: return {ExactRows::kPoint};  // limits and drives bounded
+    case ConstraintType::kCone: return {ExactRows::kPoint};        // the cone row bounded
     default: return {};
   }
 }
+
+}  // namespace
+
+bool ExactSolvePlan::SolvedWhole(ConstraintType type) { return GroupsOf(type).empty(); }
+
+namespace {
 
 // The groups attached to each dynamic body, as (group, is body2).
 using Attachments = std::vector<std::vector<std::pair<std::size_t, bool>>>;
 
 std::string Unavailable(const Scene& scene, const StepPlan& plan) {
-  for (std::size_t i = 0; i < plan.constraints.size(); ++i) {
-    const ConstraintPlan& c = plan.constraints[i];
-    if (GroupsOf(c.type).empty()) {
-      return c.label + " is a " + ConstraintTypeName(c.type) +
-             " constraint; the exact solve takes point, hinge, fixed, slider, gear, "
-             "rack-and-pinion and swing-twist constraints";
-    }
-  }
   for (std::size_t b = 0; b < plan.bodies.size(); ++b) {
     if (plan.bodies[b].motion == MotionType::kDynamic &&
         scene.bodies()[b].allowed_dofs != AllowedDofs::kAll) {
@@ -78,6 +77,7 @@ std::string Unavailable(const Scene& scene, const StepPlan& plan) {
   const std::size_t kFixedFrame = plan.bodies.size();
   for (std::size_t i = 0; i < plan.constraints.size(); ++i) {
     const ConstraintPlan& c = plan.constraints[i];
+    if (ExactSolvePlan::SolvedWhole(c.type)) continue;  // none of its rows is in K
     const std::size_t a = c.motion1 == MotionType::kDynamic ? c.body1 : kFixedFrame;
     const std::size_t b = c.motion2 == MotionType::kDynamic ? c.body2 : kFixedFrame;
     const auto [it, first] = joined.emplace(std::minmax(a, b), i);
@@ -113,7 +113,11 @@ ExactSolvePlan PlanExactSolve(const Scene& scene, const StepPlan& plan) {
   const std::size_t group_count = groups.size();
   for (std::size_t i = 0; i < plan.constraints.size(); ++i) {
     const ConstraintPlan& c = plan.constraints[i];
-    if (c.type == ConstraintType::kSwingTwist) {  // its limits always take position steps
+    // Swing-twist limits, the cone row and the whole types always take
+    // position steps (a rigid distance or pulley, a six-DOF or path's locked
+    // axes).
+    if (c.type == ConstraintType::kSwingTwist || c.type == ConstraintType::kCone ||
+        ExactSolvePlan::SolvedWhole(c.type)) {
       exact.inequality.push_back(i);
       exact.hard_limits = true;
     } else if (c.has_limits() || c.has_motor()) {  // only hinges and sliders have them here

@@ -5,7 +5,10 @@
 // at most three rows (ExactRows): a ball joint is one group, a hinge two (its
 // point and its two rotation rows), a fixed constraint two, a slider two (its
 // two translation rows and its three rotation rows), a gear or a rack and
-// pinion one (a single row). A group of fewer than three rows is padded to
+// pinion one (a single row), a cone one (its point group; the cone row is
+// bounded). Distance, pulley, six-DOF and path constraints have no group:
+// all their rows are solved by Gauss-Seidel around the exact solve
+// (SolvedWhole). A group of fewer than three rows is padded to
 // three with rows that touch nothing (K's diagonal 1 there, impulse 0), so
 // every unknown is a 3-vector and every block of K a 3x3 block.
 //
@@ -28,10 +31,11 @@ namespace manyworlds {
 
 class Scene;
 struct StepPlan;
+enum class ConstraintType : std::uint8_t;  // batch/plan.h
 
 // The kinds of row group (batch/exact_rows-inl.h has each one's J and C).
 enum class ExactRows : std::uint8_t {
-  kPoint,          // 3 rows: the anchors' separation (ball, hinge, fixed, swing-twist)
+  kPoint,          // 3 rows: the anchors' separation (ball, hinge, fixed, swing-twist, cone)
   kHingeRotation,  // 2 rows: the hinge axes aligned
   kRotation,       // 3 rows: the relative rotation at rest (fixed, slider)
   kSliderAxes,     // 2 rows: body 2's anchor on body 1's slider line
@@ -53,13 +57,20 @@ struct ExactSolvePlan {
   };
   std::vector<Group> order;
 
-  // The hinges and sliders with motors, friction or limits, and the
-  // swing-twist constraints (limits, drives), whose bounded rows are solved
-  // by Gauss-Seidel around the exact solve
-  // (batch/exact_inequality_rows-inl.h), in scene order; whether any of
-  // them has hard limits (position steps).
+  // The constraints with rows solved by Gauss-Seidel around the exact solve
+  // (batch/exact_inequality_rows-inl.h), in scene order: the hinges and
+  // sliders with motors, friction or limits, the swing-twist constraints
+  // (limits, drives), the cones (the cone row), and the constraints solved
+  // whole (SolvedWhole); whether any of them takes position steps.
   std::vector<std::size_t> inequality;
   bool hard_limits = false;
+
+  // Whether a constraint type has no row group, so that the exact solve
+  // leaves all its rows to Gauss-Seidel (distance, pulley, six-DOF, path):
+  // their rows are inequalities (a rope, a strut, a pulley's length range)
+  // or soft (springs), or their locked axes change with the free ones
+  // (six-DOF, path), which the solve's fixed groups do not model.
+  static bool SolvedWhole(ConstraintType type);
 
   // Off-diagonal block `block` couples positions first < second (rows of
   // `first`, columns of `second`).

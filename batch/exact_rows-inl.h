@@ -5,7 +5,7 @@
 // count are zero (padding). Per kind, with r1, r2 the lever arms (COM to
 // anchor, world), u = p2 - p1 the anchors' separation:
 //
-//   point (ball, hinge, fixed, swing-twist)  C = u
+//   point (ball, hinge, fixed, swing-twist, cone)  C = u
 //     J_i = [-e_i, -(r1 x e_i), e_i, r2 x e_i]
 //   hinge rotation  a1 = R1 a1_local, a2 = R2 a2_local (Jolt's repair near
 //     90 degrees, kernels/hinge_rotation-inl.h), b2 = perp(a2), c2 = a2 x b2
@@ -92,6 +92,7 @@ HWY_INLINE const PointGeometry& PointAnchors(const ConstraintBlock& c) {
     case ConstraintType::kHinge: return c.Main<HingeConstraintLanes>().anchors;
     case ConstraintType::kFixed: return c.Main<FixedConstraintLanes>().anchors;
     case ConstraintType::kSwingTwist: return c.Main<SwingTwistConstraintLanes>().anchors;
+    case ConstraintType::kCone: return c.Main<ConeConstraintLanes>().anchors;
     default: return c.Main<PointConstraintLanes>().anchors;
   }
 }
@@ -100,6 +101,7 @@ HWY_INLINE PointLanes& PointPart(const ConstraintBlock& c) {
     case ConstraintType::kHinge: return c.Main<HingeConstraintLanes>().point;
     case ConstraintType::kFixed: return c.Main<FixedConstraintLanes>().point;
     case ConstraintType::kSwingTwist: return c.Main<SwingTwistConstraintLanes>().point;
+    case ConstraintType::kCone: return c.Main<ConeConstraintLanes>().point;
     default: return c.Main<PointConstraintLanes>().point;
   }
 }

@@ -294,11 +294,17 @@ void ExactSolveVelocity(const StepPlan& plan, std::byte* block, ExactScratch& sc
                         float stiffness, const StepScalars& step, int iterations,
                         VelocityConvergence* convergence, Visit&& visit, Contacts&& contacts) {
   const ExactSolvePlan& exact = plan.exact;
+  // A scene whose constraints are all solved whole (distance, pulley,
+  // six-DOF, path) has no group: nothing to factor, and its inertias would
+  // be computed for nothing.
+  const bool factored = exact.group_count() != 0;
   exact::HingeTurns(plan, block);
-  exact::LeverArms(plan, block);
-  exact::GroupJacobians(plan, block, scratch);
-  exact::Inertia(plan, block, scratch, stiffness);
-  exact::AssembleK(plan, block, scratch);
+  if (factored) {
+    exact::LeverArms(plan, block);
+    exact::GroupJacobians(plan, block, scratch);
+    exact::Inertia(plan, block, scratch, stiffness);
+    exact::AssembleK(plan, block, scratch);
+  }
   // The contacts' rows from the velocities after the forces (their
   // restitution reads them), as in the Gauss-Seidel step; their warm start
   // after the joints'.
@@ -307,24 +313,33 @@ void ExactSolveVelocity(const StepPlan& plan, std::byte* block, ExactScratch& sc
     exact::InequalitySetupAndWarmStart(ConstraintInBlock(plan, i, block), step);
   }
   contacts.WarmStart();
-  exact::VelocityRhs(plan, block, scratch, visit);
-  exact::Factor(exact, scratch, visit);
-  exact::Solve(exact, scratch);
-  exact::ApplyVelocityImpulses(plan, block, scratch, false, visit);
+  if (factored) {
+    exact::VelocityRhs(plan, block, scratch, visit);
+    exact::Factor(exact, scratch, visit);
+    exact::Solve(exact, scratch);
+    exact::ApplyVelocityImpulses(plan, block, scratch, false, visit);
+  }
   if (exact.inequality.empty() && plan.contacts.empty()) return;
   // The first pass solved the joints alone, so what it changed says nothing
   // of the inequality rows: the tolerance is tested from the second pass on,
   // the first that visits every row.
+  // Without groups the passes are Gauss-Seidel's alone, and stop as its do
+  // once no lane applied an impulse (a pass then changes nothing).
   const auto no_visit = [] {};
   for (int pass = 1; pass < iterations; ++pass) {
     if (convergence) convergence->BeforePass();
+    bool applied = false;
     for (std::size_t i : exact.inequality) {
-      exact::InequalitySolveVelocity(ConstraintInBlock(plan, i, block));
+      applied |= exact::InequalitySolveVelocity(ConstraintInBlock(plan, i, block));
     }
-    contacts.SolveVelocity();
-    exact::VelocityRhs(plan, block, scratch, no_visit);
-    exact::Solve(exact, scratch);
-    exact::ApplyVelocityImpulses(plan, block, scratch, true, no_visit);
+    applied |= contacts.SolveVelocity();
+    if (factored) {
+      exact::VelocityRhs(plan, block, scratch, no_visit);
+      exact::Solve(exact, scratch);
+      exact::ApplyVelocityImpulses(plan, block, scratch, true, no_visit);
+    } else if (!applied) {
+      break;
+    }
     if (convergence && convergence->AfterPass()) break;
   }
   if (convergence) convergence->Finish();

@@ -189,8 +189,10 @@ struct ContactPhases {
   void WarmStart() const {
     each([&](const ContactBlock& c) { ContactWarmStart(c, warm_start_ratio); });
   }
-  void SolveVelocity() const {
-    each([&](const ContactBlock& c) { (void)ContactSolveVelocity(c); });
+  bool SolveVelocity() const {
+    bool applied = false;
+    each([&](const ContactBlock& c) { applied |= ContactSolveVelocity(c); });
+    return applied;
   }
   bool SolvePosition() const {
     bool moved = false;
@@ -209,10 +211,11 @@ bool StepBlockWith(const StepPlan& plan, std::byte* block, const std::byte* next
   // The exact solve visits each row group three times in its velocity
   // solve and three times per Newton step, whose number is known only as
   // they converge: its prefetch is spread over the velocity solve and the
-  // first Newton step.
+  // first Newton step (a scene whose constraints are all solved whole has
+  // no group: its requests wait for NextBlockPrefetch::Rest).
   const bool exact = params.solver == JointSolver::kExact && constraint_count != 0;
   const std::size_t visits =
-      exact ? 6 * plan.exact.group_count()
+      exact ? 6 * std::max<std::size_t>(1, plan.exact.group_count())
             : std::max<std::size_t>(1, solved_count) *
                   static_cast<std::size_t>(2 + params.velocity_iterations +
                                            params.position_iterations);

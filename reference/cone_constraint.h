@@ -80,6 +80,28 @@ class ConeConstraint {
 
   const Vec3<T>& rotation_axis() const { return rotation_axis_; }
 
+  // The exact solve's view (reference/world.h): the anchors (body space) of
+  // its point group, and the cone row it leaves to Gauss-Seidel.
+  const Vec3<T>& local_point1() const { return local_point1_; }
+  const Vec3<T>& local_point2() const { return local_point2_; }
+  void SetupInequalityRows(const Body<T>& body1, const Body<T>& body2, T /*dt*/) {
+    CalculateRotationProperties(body1, body2);
+  }
+  void WarmStartInequalityRows(Body<T>& body1, Body<T>& body2, T warm_start_ratio) {
+    angle_.WarmStart(body1, body2, warm_start_ratio);
+  }
+  bool SolveInequalityVelocity(Body<T>& body1, Body<T>& body2, T /*dt*/) {
+    return angle_.IsActive() && angle_.SolveVelocityConstraint(body1, body2, rotation_axis_, T(0),
+                                                               std::numeric_limits<T>::max());
+  }
+  bool SolveLimitPosition(Body<T>& body1, Body<T>& body2, T /*dt*/, T baumgarte) {
+    CalculateRotationProperties(body1, body2);
+    return angle_.IsActive() &&
+           angle_.SolvePositionConstraint(body1, body2, cos_theta_ - cos_half_cone_, baumgarte);
+  }
+  // The point part's accumulated impulse (the exact solve's point group).
+  Vec3<T> PointImpulse() const { return point_.SaveState(); }
+
   // Solver state (reference/solver_state.h), in the batch's order
   // (docs/stepping.md, "Solver state of one world").
   void SaveSolverState(SolverStateWriter<T>& out) const {

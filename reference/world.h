@@ -411,29 +411,40 @@ class World {
         constraint);
   }
 
+  // The constraint types the exact solve leaves whole to Gauss-Seidel
+  // (ExactSolvePlan::SolvedWhole): none of their rows is in K.
+  template <class Type>
+  static constexpr bool kSolvedWhole =
+      std::is_same_v<Type, DistanceConstraint<T>> || std::is_same_v<Type, PulleyConstraint<T>> ||
+      std::is_same_v<Type, SixDofConstraint<T>> || std::is_same_v<Type, PathConstraint<T>>;
+
+  // Such a constraint seen as the rows around the exact solve: every row of
+  // it, with its own verbs.
+  template <class C>
+  struct SolvedWhole {
+    C& c;
+    void SetupInequalityRows(const Body<T>& body1, const Body<T>& body2, T dt) {
+      c.SetupVelocityConstraint(body1, body2, dt);
+    }
+    void WarmStartInequalityRows(Body<T>& body1, Body<T>& body2, T warm_start_ratio) {
+      c.WarmStartVelocityConstraint(body1, body2, warm_start_ratio);
+    }
+    bool SolveInequalityVelocity(Body<T>& body1, Body<T>& body2, T dt) {
+      return c.SolveVelocityConstraint(body1, body2, dt);
+    }
+    bool SolveLimitPosition(Body<T>& body1, Body<T>& body2, T dt, T baumgarte) {
+      return c.SolvePositionConstraint(body1, body2, dt, baumgarte);
+    }
+  };
+
   // JointSolver::kExact (reference/exact_solve.h): the equality rows of
-  // point, hinge, fixed, slider, gear, rack-and-pinion and swing-twist
-  // constraints, the hinges' and sliders' motors, friction and limits and the
-  // swing-twist limits and drives by Gauss-Seidel around them, on bodies without restricted degrees of freedom (what the batch's
+  // point, hinge, fixed, slider, gear, rack-and-pinion, swing-twist and cone
+  // constraints; the hinges' and sliders' motors, friction and limits, the
+  // swing-twist limits and drives, the cone rows and every row of the
+  // distance, pulley, six-DOF and path constraints by Gauss-Seidel around
+  // them; on bodies without restricted degrees of freedom (what the batch's
   // plan takes).
   ExactJointSolve<T> ExactSolve(T stiffness) {
-    for (std::size_t index = 0; index < constraints_.size(); ++index) {
-      std::visit(
-          [&](const auto& c) {
-            using Type = std::decay_t<decltype(c)>;
-            constexpr bool kTaken =
-                std::is_same_v<Type, PointConstraint<T>> || std::is_same_v<Type, FixedConstraint<T>> ||
-                std::is_same_v<Type, HingeConstraint<T>> || std::is_same_v<Type, SliderConstraint<T>> ||
-                std::is_same_v<Type, GearConstraint<T>> ||
-                std::is_same_v<Type, RackAndPinionConstraint<T>> ||
-                std::is_same_v<Type, SwingTwistConstraint<T>>;
-            if constexpr (!kTaken) {
-              throw std::invalid_argument("reference::World: constraint " + std::to_string(index) +
-                                          " is of a type the exact solve does not take");
-            }
-          },
-          constraints_[index]);
-    }
     for (std::size_t index = 0; index < bodies_.size(); ++index) {
       const Body<T>& body = bodies_[index];
       if (body.IsDynamic() && (body.translation_mask != Vec3<T>::Ones() ||
@@ -457,7 +468,8 @@ class World {
           [&](const auto& c) {
             using Type = std::decay_t<decltype(c)>;
             if constexpr (std::is_same_v<Type, PointConstraint<T>> ||
-                          std::is_same_v<Type, SwingTwistConstraint<T>>) {
+                          std::is_same_v<Type, SwingTwistConstraint<T>> ||
+                          std::is_same_v<Type, ConeConstraint<T>>) {
               groups.push_back(PointRows(c.body1(), c.body2(), bodies_, c.local_point1(), c.local_point2()));
             } else if constexpr (std::is_same_v<Type, HingeConstraint<T>>) {
               groups.push_back(PointRows(c.body1(), c.body2(), bodies_, c.local_point1(), c.local_point2()));
@@ -571,10 +583,11 @@ class World {
               if constexpr (std::is_same_v<Type, HingeConstraint<T>> ||
                             std::is_same_v<Type, SliderConstraint<T>>) {
                 return c.HasInequalityRows();
-              } else if constexpr (std::is_same_v<Type, SwingTwistConstraint<T>>) {
-                return true;  // its limits (and drives)
               } else {
-                return false;
+                // The swing-twist limits (and drives), the cone row, and
+                // the constraints solved whole.
+                return std::is_same_v<Type, SwingTwistConstraint<T>> ||
+                       std::is_same_v<Type, ConeConstraint<T>> || kSolvedWhole<Type>;
               }
             },
             constraint);
@@ -586,9 +599,13 @@ class World {
           std::visit(
               [&](auto& c) {
                 using Type = std::decay_t<decltype(c)>;
-                if constexpr (std::is_same_v<Type, HingeConstraint<T>> ||
-                              std::is_same_v<Type, SliderConstraint<T>> ||
-                              std::is_same_v<Type, SwingTwistConstraint<T>>) {
+                if constexpr (kSolvedWhole<Type>) {
+                  SolvedWhole<Type> whole{c};
+                  any |= action(whole, bodies_[c.body1()], bodies_[c.body2()]);
+                } else if constexpr (std::is_same_v<Type, HingeConstraint<T>> ||
+                                     std::is_same_v<Type, SliderConstraint<T>> ||
+                                     std::is_same_v<Type, SwingTwistConstraint<T>> ||
+                                     std::is_same_v<Type, ConeConstraint<T>>) {
                   any |= action(c, bodies_[c.body1()], bodies_[c.body2()]);
                 }
               },
@@ -608,15 +625,21 @@ class World {
       warm_start_contacts();
       exact.SolveVelocity();
       // The tolerance is tested from the second pass on, the first that
-      // visits the inequality rows.
+      // visits the inequality rows. Without row groups (every constraint
+      // solved whole) the passes are Gauss-Seidel's, and stop as its do.
+      const bool factored = !ExactRowGroups().empty();
       if (!bounded.empty() || !contacts_.empty()) {
         for (int pass = 1; pass < settings.velocity_iterations; ++pass) {
           remember_velocities();
-          for_each_bounded([&](auto& c, Body<T>& body1, Body<T>& body2) {
+          bool applied = for_each_bounded([&](auto& c, Body<T>& body1, Body<T>& body2) {
             return c.SolveInequalityVelocity(body1, body2, dt);
           });
-          solve_contact_velocities();
-          exact.SolveVelocity(true);
+          applied |= solve_contact_velocities();
+          if (factored) {
+            exact.SolveVelocity(true);
+          } else if (!applied) {
+            break;
+          }
           if (within_tolerance()) break;
         }
       }

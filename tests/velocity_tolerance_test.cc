@@ -19,7 +19,7 @@
 //  - a negative, NaN or infinite tolerance is refused naming the field,
 //    before anything is written.
 // For Gauss-Seidel's passes (cartpole, ragdoll, box-pile, more_types) and the
-// exact solve's passes around its joints (ragdoll, quadruped).
+// exact solve's passes around its joints (ragdoll, quadruped, more_types).
 
 #include <gtest/gtest.h>
 
@@ -296,11 +296,13 @@ INSTANTIATE_TEST_SUITE_P(
     CaseName);
 
 // The exact solve's passes of block Gauss-Seidel around the joints solved at
-// once (motors, limits, contacts): scenes that have such rows.
+// once (motors, limits, contacts; more_types: cone rows, and the distance,
+// pulley, six-DOF and path constraints solved whole): scenes that have such
+// rows.
 INSTANTIATE_TEST_SUITE_P(
     Exact, VelocityToleranceTest,
     ::testing::Combine(::testing::ValuesIn(SupportedStepTargets()),
-                       ::testing::Values("ragdoll", "quadruped"),
+                       ::testing::Values("ragdoll", "quadruped", "more_types"),
                        ::testing::Values(JointSolver::kExact)),
     CaseName);
 

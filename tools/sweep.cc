@@ -175,7 +175,7 @@ SweepConfig ConfigOf(int argc, char** argv) {
       const StepPlan plan = CompilePlan(MakeScene(id));
       if (!plan.exact.available()) {
         throw UsageError("--solver exact: scene '" + id + "' cannot be solved exactly (" +
-                         plan.exact.unavailable + "); pass --scenes with reference scenes");
+                         plan.exact.unavailable + "); pass --scenes without it");
       }
     }
   } else if (solver != "gauss-seidel") {

@@ -564,10 +564,12 @@ def test_fused_drive_targets_give_the_bits_of_the_setters():
         fused.step(target_translations={1: q})
 
 
-def test_exact_solve_closes_chain16_and_cartpole_joints_and_refuses_a_cone():
+def test_exact_solve_closes_chain16_and_cartpole_joints_and_refuses_a_restricted_body():
     # The exact joint solve (docs/stepping.md): chain16's and cartpole's
     # joints within the tolerance after every step, where Gauss-Seidel leaves
-    # centimetres; a cone constraint (not taken) is refused by name.
+    # centimetres; every constraint type steps (a cone's cone row and a
+    # distance spring by Gauss-Seidel around the solve); a body with
+    # restricted degrees of freedom is refused by name, before anything moves.
     settings = mw.StepSettings(solver=mw.JointSolver.EXACT, position_iterations=10)
     assert settings.exact_tolerance == pytest.approx(1e-5)
     for scene in ("chain16", "cartpole"):
@@ -575,11 +577,22 @@ def test_exact_solve_closes_chain16_and_cartpole_joints_and_refuses_a_cone():
         for _ in range(60):
             batch.step(settings)
             assert batch.max_constraint_errors().max() <= settings.exact_tolerance + 2e-6
-    cone = mw.Batch(mw.make_scene("singular-cone"), 4, threads=1)
-    before = cone.get_state()
-    with pytest.raises(mw.SceneError, match="cone"):
-        cone.step(settings)
-    assert_same_bits(cone.get_state(), before)
+    for scene in ("singular-cone", "spring-0.5"):
+        batch = mw.Batch(mw.make_scene(scene), 4, threads=1)
+        for _ in range(60):
+            batch.step(settings)
+        assert batch.unhealthy_world_count == 0
+        assert np.isfinite(batch.get_state()).all()
+    scene = mw.Scene()
+    scene.add_body(mw.BodySettings(motion_type=mw.MotionType.STATIC))
+    scene.add_body(mw.BodySettings(name="planar slab", position=(1, 0, 0),
+                                   allowed_dofs=mw.AllowedDofs.PLANE_2D))
+    scene.add_constraint(mw.PointConstraintSettings(body1=0, body2=1, name="pin"))
+    planar = mw.Batch(scene, 4, threads=1)
+    before = planar.get_state()
+    with pytest.raises(mw.SceneError, match="planar slab"):
+        planar.step(settings)
+    assert_same_bits(planar.get_state(), before)
 
 
 def test_make_chain_builds_the_chains_at_any_ratio_and_names_a_bad_argument():
