@@ -60,12 +60,23 @@ namespace {
 using Attachments = std::vector<std::vector<std::pair<std::size_t, bool>>>;
 
 std::string Unavailable(const Scene& scene, const StepPlan& plan) {
-  for (std::size_t b = 0; b < plan.bodies.size(); ++b) {
-    if (plan.bodies[b].motion == MotionType::kDynamic &&
-        scene.bodies()[b].allowed_dofs != AllowedDofs::kAll) {
-      return plan.bodies[b].label +
-             " restricts its allowed_dofs; the exact solve takes unrestricted bodies only";
+  // A body whose allowed DOFs lock some axes moves only along the others
+  // (K counts its mass and inertia there only). A constraint with row groups
+  // needs one dynamic body with all six: between a restricted body and a
+  // fixed frame or another restricted body, rows along the locked axes (a
+  // planar hinge's out-of-plane rows) move nothing, and K is singular.
+  const auto free = [&](std::size_t body, MotionType motion) {
+    return motion == MotionType::kDynamic && scene.bodies()[body].allowed_dofs == AllowedDofs::kAll;
+  };
+  for (const ConstraintPlan& c : plan.constraints) {
+    if (ExactSolvePlan::SolvedWhole(c.type) || free(c.body1, c.motion1) ||
+        free(c.body2, c.motion2)) {
+      continue;
     }
+    return c.label + " joins no dynamic body with all six degrees of freedom (" +
+           plan.bodies[c.body1].label + ", " + plan.bodies[c.body2].label +
+           "): the rows along the axes their allowed_dofs lock move nothing, which the "
+           "exact solve cannot factor";
   }
   // Two constraints between the same two bodies (static and kinematic
   // bodies count as one fixed frame: neither moves in the solve) have

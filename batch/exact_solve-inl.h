@@ -264,7 +264,10 @@ void NewtonStep(const StepPlan& plan, std::byte* block, ExactScratch& scratch, V
       const Quat q = LoadQuat(body.rotation, offset);
       // A scale of 1 gives the unscaled step's bits (x + 1 t = x + t).
       const LaneVec scale = Load(scratch.step_scale, offset);
-      const Vec3 moved = MulAdd(LoadVec3(scratch.translation[b], offset), scale, x);
+      // Without the locked axes of a restricted body (K counted none).
+      const Vec3 translation =
+          LockTranslation(body, LoadVec3(scratch.translation[b], offset), offset);
+      const Vec3 moved = MulAdd(translation, scale, x);
       const Quat turned = AddRotationStep(q, Scale(LoadVec3(scratch.rotation[b], offset), scale));
       StoreVec3(Select(moving, moved, x), body.position, offset);
       StoreQuat(Select(moving, turned, q), body.rotation, offset);

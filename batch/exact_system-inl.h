@@ -263,15 +263,32 @@ inline void Inertia(const StepPlan& plan, std::byte* block, ExactScratch& scratc
   }
 }
 
+// The body's linear inverse mass per world axis: m^-1, and 0 along the axes
+// its allowed DOFs lock (the velocity and position steps drop those
+// components, LockTranslation, so K must not count them). The same bits as
+// m^-1 for an unrestricted body.
+HWY_INLINE Vec3 LinearInverseMass(const BodyLanes& body, std::size_t offset) {
+  const LaneVec inv_mass = Load(body.inv_mass, offset);
+  return LockTranslation(body, Vec3{inv_mass, inv_mass, inv_mass}, offset);
+}
+
 // m^-1 L_a L_b^T + A_a (I^-1 A_b^T): how the rows a and b couple through one
-// body (inv_i_angular_b holds I^-1 A_b^T).
-HWY_INLINE Mat33 Coupling(LaneVec inv_mass, const Mat33& linear_a, const Mat33& angular_a,
-                          const Mat33& linear_b, const Mat33& inv_i_angular_b) {
+// body (inv_i_angular_b holds I^-1 A_b^T; m^-1 per axis for a body with
+// locked translation axes).
+HWY_INLINE Mat33 Coupling(const BodyLanes& body, std::size_t offset, const Mat33& linear_a,
+                          const Mat33& angular_a, const Mat33& linear_b,
+                          const Mat33& inv_i_angular_b) {
+  const LaneVec inv_mass = Load(body.inv_mass, offset);
+  const bool restricted = DofRestricted(body);
+  const Vec3 free = LinearInverseMass(body, offset);
   Mat33 k;
   for (int i = 0; i < 3; ++i) {
+    const Vec3 a = Row(linear_a, i);
+    const Vec3 weighted{hn::Mul(a.x, free.x), hn::Mul(a.y, free.y), hn::Mul(a.z, free.z)};
     for (int j = 0; j < 3; ++j) {
-      k.m[i][j] = hn::MulAdd(inv_mass, Dot(Row(linear_a, i), Row(linear_b, j)),
-                             Dot(Row(angular_a, i), Column(inv_i_angular_b, j)));
+      const LaneVec angular = Dot(Row(angular_a, i), Column(inv_i_angular_b, j));
+      k.m[i][j] = restricted ? hn::Add(Dot(weighted, Row(linear_b, j)), angular)
+                             : hn::MulAdd(inv_mass, Dot(a, Row(linear_b, j)), angular);
     }
   }
   return k;
@@ -319,8 +336,8 @@ inline void AssembleK(const StepPlan& plan, std::byte* block, ExactScratch& scra
               inv_i_angular.m[0][r] = step.x, inv_i_angular.m[1][r] = step.y;
               inv_i_angular.m[2][r] = step.z;
             }
-            const Mat33 term = Coupling(Load(BodyAt(plan, block, body).inv_mass, offset), linear,
-                                        angular, linear, inv_i_angular);
+            const Mat33 term = Coupling(BodyAt(plan, block, body), offset, linear, angular,
+                                        linear, inv_i_angular);
             for (int i = 0; i < 3; ++i) {
               for (int j = 0; j < 3; ++j) k.m[i][j] = hn::Add(k.m[i][j], term.m[i][j]);
             }
@@ -339,10 +356,18 @@ inline void AssembleK(const StepPlan& plan, std::byte* block, ExactScratch& scra
                             Mat33Lanes& cache) {
         Mat33 a = ZeroMat33();
         if (motion == MotionType::kDynamic) {
+          const BodyLanes& lanes = BodyAt(plan, block, body);
           const Vec3 r = LoadVec3(lever, offset);
           a = point::InverseInertiaTimesCross(LoadSym33(scratch.inverse_inertia[body], offset), r);
-          point::AddBodyToInverseEffectiveMass(Load(BodyAt(plan, block, body).inv_mass, offset),
-                                               a, r, k);
+          if (!DofRestricted(lanes)) {
+            point::AddBodyToInverseEffectiveMass(Load(lanes.inv_mass, offset), a, r, k);
+          } else {  // m^-1 only along the free axes
+            point::AddBodyToInverseEffectiveMass(Zero(), a, r, k);
+            const Vec3 free = LinearInverseMass(lanes, offset);
+            k.xx = hn::Add(k.xx, free.x);
+            k.yy = hn::Add(k.yy, free.y);
+            k.zz = hn::Add(k.zz, free.z);
+          }
         }
         StoreMat33(a, cache, offset);
       };
@@ -365,8 +390,8 @@ inline void AssembleK(const StepPlan& plan, std::byte* block, ExactScratch& scra
                   linear_first, angular_first, unused);
         GroupSide(plan, block, scratch, shared.second, shared.second_is_body2, offset,
                   linear_second, angular_second, inv_i_angular_second);
-        const Mat33 term = Coupling(Load(body.inv_mass, offset), linear_first, angular_first,
-                                    linear_second, inv_i_angular_second);
+        const Mat33 term = Coupling(body, offset, linear_first, angular_first, linear_second,
+                                    inv_i_angular_second);
         Mat33 coupling = LoadMat33(out, offset);
         for (int i = 0; i < 3; ++i) {
           for (int j = 0; j < 3; ++j) coupling.m[i][j] = hn::Add(coupling.m[i][j], term.m[i][j]);
@@ -383,13 +408,13 @@ inline void AssembleK(const StepPlan& plan, std::byte* block, ExactScratch& scra
       Mat33 a_first, a_second;
       Side(first, shared.first_is_body2, offset, r_first, a_first);
       Side(second, shared.second_is_body2, offset, r_second, a_second);
-      const LaneVec inv_mass = Load(body.inv_mass, offset);
+      const Vec3 inv_mass = LinearInverseMass(body, offset);
       Mat33 coupling = LoadMat33(out, offset);
       for (int column = 0; column < 3; ++column) {
         Vec3 term = Cross(Column(a_second, column), r_first);
-        if (column == 0) term.x = hn::Add(term.x, inv_mass);
-        if (column == 1) term.y = hn::Add(term.y, inv_mass);
-        if (column == 2) term.z = hn::Add(term.z, inv_mass);
+        if (column == 0) term.x = hn::Add(term.x, inv_mass.x);
+        if (column == 1) term.y = hn::Add(term.y, inv_mass.y);
+        if (column == 2) term.z = hn::Add(term.z, inv_mass.z);
         if (!same_sign) term = Neg(term);
         coupling.m[0][column] = hn::Add(coupling.m[0][column], term.x);
         coupling.m[1][column] = hn::Add(coupling.m[1][column], term.y);

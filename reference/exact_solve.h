@@ -181,7 +181,9 @@ class ExactJointSolve {
     for (std::size_t body = 0; body < bodies_.size(); ++body) {
       if (column_[body] == kNotUnknown) continue;
       const std::size_t c = column_[body];
-      inverse_mass.template block<3, 3>(c, c) = bodies_[body].inv_mass * Mat33<T>::Identity();
+      // m^-1 along the free translation axes only (the steps lock the others).
+      inverse_mass.template block<3, 3>(c, c) =
+          bodies_[body].inv_mass * Mat33<T>(bodies_[body].translation_mask.asDiagonal());
       inverse_mass.template block<3, 3>(c + 3, c + 3) = g.inverse_inertia[body];
     }
     std::size_t row = 0;

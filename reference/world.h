@@ -442,16 +442,30 @@ class World {
   // constraints; the hinges' and sliders' motors, friction and limits, the
   // swing-twist limits and drives, the cone rows and every row of the
   // distance, pulley, six-DOF and path constraints by Gauss-Seidel around
-  // them; on bodies without restricted degrees of freedom (what the batch's
-  // plan takes).
+  // them; every constraint with row groups on at least one dynamic body with
+  // all six degrees of freedom (what the batch's plan takes).
   ExactJointSolve<T> ExactSolve(T stiffness) {
-    for (std::size_t index = 0; index < bodies_.size(); ++index) {
+    // A constraint with row groups needs a dynamic body with all six DOFs
+    // (batch/exact_plan.cc).
+    const auto free = [&](std::size_t index) {
       const Body<T>& body = bodies_[index];
-      if (body.IsDynamic() && (body.translation_mask != Vec3<T>::Ones() ||
-                               body.rotation_mask != Vec3<T>::Ones())) {
-        throw std::invalid_argument("reference::World: body " + std::to_string(index) +
-                                    " restricts its DOFs (exact solve)");
-      }
+      return body.IsDynamic() && body.translation_mask == Vec3<T>::Ones() &&
+             body.rotation_mask == Vec3<T>::Ones();
+    };
+    for (std::size_t index = 0; index < constraints_.size(); ++index) {
+      if (!IsSolved(constraints_[index])) continue;
+      std::visit(
+          [&](const auto& c) {
+            using Type = std::decay_t<decltype(c)>;
+            if constexpr (!kSolvedWhole<Type>) {
+              if (!free(c.body1()) && !free(c.body2())) {
+                throw std::invalid_argument("reference::World: constraint " +
+                                            std::to_string(index) +
+                                            " joins no unrestricted dynamic body (exact solve)");
+              }
+            }
+          },
+          constraints_[index]);
     }
     return ExactJointSolve<T>(bodies_, [this] { return ExactRowGroups(); }, exact_impulses_,
                               stiffness);

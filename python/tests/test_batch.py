@@ -564,12 +564,14 @@ def test_fused_drive_targets_give_the_bits_of_the_setters():
         fused.step(target_translations={1: q})
 
 
-def test_exact_solve_closes_chain16_and_cartpole_joints_and_refuses_a_restricted_body():
+def test_exact_solve_closes_chain16_and_cartpole_joints_and_refuses_a_planar_pin():
     # The exact joint solve (docs/stepping.md): chain16's and cartpole's
     # joints within the tolerance after every step, where Gauss-Seidel leaves
     # centimetres; every constraint type steps (a cone's cone row and a
-    # distance spring by Gauss-Seidel around the solve); a body with
-    # restricted degrees of freedom is refused by name, before anything moves.
+    # distance spring by Gauss-Seidel around the solve), the hopper's planar
+    # torso too; a ball joint between the ground and a planar body (no
+    # dynamic body with all six degrees of freedom: its out-of-plane rows
+    # move nothing) is refused by name, before anything moves.
     settings = mw.StepSettings(solver=mw.JointSolver.EXACT, position_iterations=10)
     assert settings.exact_tolerance == pytest.approx(1e-5)
     for scene in ("chain16", "cartpole"):
@@ -577,7 +579,7 @@ def test_exact_solve_closes_chain16_and_cartpole_joints_and_refuses_a_restricted
         for _ in range(60):
             batch.step(settings)
             assert batch.max_constraint_errors().max() <= settings.exact_tolerance + 2e-6
-    for scene in ("singular-cone", "spring-0.5"):
+    for scene in ("singular-cone", "spring-0.5", "hopper"):
         batch = mw.Batch(mw.make_scene(scene), 4, threads=1)
         for _ in range(60):
             batch.step(settings)

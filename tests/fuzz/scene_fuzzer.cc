@@ -3,7 +3,7 @@
 // random frames, so bodies start inside each other and the ground), sometimes passed through
 // LimitMassRange, a Batch of a few worlds, then a few steps with random
 // actions, states, resets and per-world parameters written in (NaN,
-// infinities and huge values included).
+// infinities and huge values included), with either joint solver.
 //
 // What must hold for every input (built with -fsanitize=fuzzer,address,
 // undefined, so any bad access, leak or undefined behaviour aborts):
@@ -427,6 +427,15 @@ StepSettings Settings(FuzzedDataProvider& in) {
   // Each world's own stop, snapshot and restore (negative or not finite:
   // refused).
   if (in.ConsumeBool()) s.velocity_tolerance = Float(in, 0, 0.1f);
+  // The exact joint solve on every constraint type around it; refused for
+  // bodies with restricted DOFs, two constraints with row groups between
+  // the same bodies, and a tolerance or stiffness out of range.
+  if (in.ConsumeBool()) {
+    s.solver = JointSolver::kExact;
+    s.position_iterations = in.ConsumeIntegralInRange<int>(0, 30);
+    if (in.ConsumeBool()) s.exact_tolerance = Float(in, 0, 1e-2f);
+    if (in.ConsumeBool()) s.exact_geometric_stiffness = Float(in, 0, 2);
+  }
   return s;
 }
 
