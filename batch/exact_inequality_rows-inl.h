@@ -48,11 +48,9 @@
 
 #include "batch/cone_constraint-inl.h"
 #include "batch/constraint_block.h"
-#include "batch/distance_constraint-inl.h"
+#include "batch/constraint_verbs-inl.h"
+#include "batch/exact_plan.h"
 #include "batch/hinge_constraint-inl.h"
-#include "batch/path_constraint-inl.h"
-#include "batch/pulley_constraint-inl.h"
-#include "batch/six_dof_constraint-inl.h"
 #include "batch/slider_constraint-inl.h"
 #include "batch/swing_twist_constraint-inl.h"
 
@@ -61,34 +59,14 @@ namespace manyworlds {
 namespace HWY_NAMESPACE {
 namespace exact {
 
-// Setup and warm start of a constraint solved whole
-// (ExactSolvePlan::SolvedWhole); false for the other types.
-inline bool WholeSetupAndWarmStart(const ConstraintBlock& c, const StepScalars& step) {
-  switch (c.plan.type) {
-    case ConstraintType::kDistance:
-      DistanceConstraintSetup(c, step);
-      DistanceConstraintWarmStart(c, step);
-      return true;
-    case ConstraintType::kPulley:
-      PulleyConstraintSetup(c, step);
-      PulleyConstraintWarmStart(c, step);
-      return true;
-    case ConstraintType::kSixDof:
-      SixDofConstraintSetup(c, step);
-      SixDofConstraintWarmStart(c, step);
-      return true;
-    case ConstraintType::kPath:
-      PathConstraintSetup(c, step);
-      PathConstraintWarmStart(c, step);
-      return true;
-    default: return false;
-  }
-}
-
 // Setup at the current poses and warm start (the hinge's angle and axes
 // are those HingeTurns wrote), drives before limits as Gauss-Seidel.
 inline void InequalitySetupAndWarmStart(const ConstraintBlock& c, const StepScalars& step) {
-  if (WholeSetupAndWarmStart(c, step)) return;
+  if (ExactSolvePlan::SolvedWhole(c.plan.type)) {
+    SetupConstraint(c, step);
+    WarmStartConstraint(c, step);
+    return;
+  }
   const float ratio = step.warm_start_ratio;
   if (c.plan.type == ConstraintType::kCone) {  // the point part is the exact solve's
     ConeRotationProperties(c);
@@ -127,16 +105,10 @@ inline void InequalitySetupAndWarmStart(const ConstraintBlock& c, const StepScal
 // One velocity step of the motor (drives), then the limits; every row of a
 // constraint solved whole. True if any lane applied an impulse.
 inline bool InequalitySolveVelocity(const ConstraintBlock& c) {
-  switch (c.plan.type) {
-    case ConstraintType::kDistance: return DistanceConstraintSolveVelocity(c);
-    case ConstraintType::kPulley: return PulleyConstraintSolveVelocity(c);
-    case ConstraintType::kSixDof: return SixDofConstraintSolveVelocity(c);
-    case ConstraintType::kPath: return PathConstraintSolveVelocity(c);
-    case ConstraintType::kCone: {
-      auto& s = c.Main<ConeConstraintLanes>();
-      return AngleSolveVelocity(c.bodies, s.geometry, s.angle);
-    }
-    default: break;
+  if (ExactSolvePlan::SolvedWhole(c.plan.type)) return SolveConstraintVelocity(c);
+  if (c.plan.type == ConstraintType::kCone) {
+    auto& s = c.Main<ConeConstraintLanes>();
+    return AngleSolveVelocity(c.bodies, s.geometry, s.angle);
   }
   bool applied = false;
   if (c.plan.type == ConstraintType::kSwingTwist) {
@@ -169,18 +141,13 @@ inline bool InequalitySolveVelocity(const ConstraintBlock& c) {
 
 // One Baumgarte step of a hard limit at the current poses (every row of a
 // constraint solved whole); true if any lane moved.
-inline bool LimitSolvePosition(const ConstraintBlock& c, const StepScalars& step) {
-  switch (c.plan.type) {
-    case ConstraintType::kDistance: return DistanceConstraintSolvePosition(c, step);
-    case ConstraintType::kPulley: return PulleyConstraintSolvePosition(c, step);
-    case ConstraintType::kSixDof: return SixDofConstraintSolvePosition(c, step);
-    case ConstraintType::kPath: return PathConstraintSolvePosition(c, step);
-    case ConstraintType::kCone: {
-      auto& s = c.Main<ConeConstraintLanes>();
-      ConeRotationProperties(c);
-      return AngleSolvePosition(c.bodies, s.geometry, s.angle, step.baumgarte);
-    }
-    default: break;
+inline bool LimitSolvePosition(const StepPlan& plan, const ConstraintBlock& c,
+                               const StepScalars& step) {
+  if (ExactSolvePlan::SolvedWhole(c.plan.type)) return SolveConstraintPosition(plan, c, step);
+  if (c.plan.type == ConstraintType::kCone) {
+    auto& s = c.Main<ConeConstraintLanes>();
+    ConeRotationProperties(c);
+    return AngleSolvePosition(c.bodies, s.geometry, s.angle, step.baumgarte);
   }
   if (c.plan.type == ConstraintType::kSwingTwist) {
     auto& s = c.Main<SwingTwistConstraintLanes>();

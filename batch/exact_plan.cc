@@ -46,13 +46,24 @@ std::vector<ExactRows> GroupsOf(ConstraintType type) {
     case ConstraintType::kRackAndPinion: return {ExactRows::kRackAndPinion};
     case ConstraintType::kSwingTwist: return {ExactRows::kPoint};  // limits and drives bounded
     case ConstraintType::kCone: return {ExactRows::kPoint};        // the cone row bounded
-    default: return {};
+    case ConstraintType::kDistance: case ConstraintType::kPulley:  // SolvedWhole
+    case ConstraintType::kSixDof: case ConstraintType::kPath:
+      return {};
   }
+  return {};
 }
 
 }  // namespace
 
-bool ExactSolvePlan::SolvedWhole(ConstraintType type) { return GroupsOf(type).empty(); }
+bool ExactSolvePlan::SolvedWhole(ConstraintType type) {
+  // Called per constraint and pass by the step: no GroupsOf (it allocates).
+  switch (type) {
+    case ConstraintType::kDistance: case ConstraintType::kPulley:
+    case ConstraintType::kSixDof: case ConstraintType::kPath:
+      return true;
+    default: return false;
+  }
+}
 
 namespace {
 

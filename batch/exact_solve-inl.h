@@ -398,7 +398,7 @@ int ExactSolvePosition(const StepPlan& plan, std::byte* block, ExactScratch& scr
     if (!limited) continue;
     if (exact.hard_limits) {
       for (std::size_t i : exact.inequality) {
-        limits_moved |= exact::LimitSolvePosition(ConstraintInBlock(plan, i, block), step);
+        limits_moved |= exact::LimitSolvePosition(plan, ConstraintInBlock(plan, i, block), step);
       }
     }
     limits_moved |= contacts.SolvePosition();

@@ -37,20 +37,10 @@
 #define HWY_TARGET_INCLUDE "batch/step_kernels.cc"
 #include "hwy/foreach_target.h"  // IWYU pragma: keep
 
-#include "batch/cone_constraint-inl.h"
 #include "batch/constraint_block.h"
+#include "batch/constraint_verbs-inl.h"
 #include "batch/contact_constraint-inl.h"
-#include "batch/distance_constraint-inl.h"
 #include "batch/exact_solve-inl.h"
-#include "batch/fixed_constraint-inl.h"
-#include "batch/gear_constraint-inl.h"
-#include "batch/hinge_constraint-inl.h"
-#include "batch/point_constraint-inl.h"
-#include "batch/pulley_constraint-inl.h"
-#include "batch/slider_constraint-inl.h"
-#include "batch/path_constraint-inl.h"
-#include "batch/six_dof_constraint-inl.h"
-#include "batch/swing_twist_constraint-inl.h"
 #include "batch/velocity_convergence-inl.h"
 #include "hwy/highway.h"
 #include "kernels/integration-inl.h"
@@ -58,78 +48,6 @@
 HWY_BEFORE_NAMESPACE();
 namespace manyworlds {
 namespace HWY_NAMESPACE {
-
-inline void SetupConstraint(const ConstraintBlock& c, const StepScalars& step) {
-  switch (c.plan.type) {
-    case ConstraintType::kPoint: return PointConstraintSetup(c, step);
-    case ConstraintType::kFixed: return FixedConstraintSetup(c, step);
-    case ConstraintType::kHinge: return HingeConstraintSetup(c, step);
-    case ConstraintType::kSlider: return SliderConstraintSetup(c, step);
-    case ConstraintType::kGear: return GearConstraintSetup(c, step);
-    case ConstraintType::kRackAndPinion: return RackAndPinionConstraintSetup(c, step);
-    case ConstraintType::kDistance: return DistanceConstraintSetup(c, step);
-    case ConstraintType::kPulley: return PulleyConstraintSetup(c, step);
-    case ConstraintType::kCone: return ConeConstraintSetup(c, step);
-    case ConstraintType::kSwingTwist: return SwingTwistConstraintSetup(c, step);
-    case ConstraintType::kSixDof: return SixDofConstraintSetup(c, step);
-    case ConstraintType::kPath: return PathConstraintSetup(c, step);
-  }
-}
-
-inline void WarmStartConstraint(const ConstraintBlock& c, const StepScalars& step) {
-  switch (c.plan.type) {
-    case ConstraintType::kPoint: return PointConstraintWarmStart(c, step);
-    case ConstraintType::kFixed: return FixedConstraintWarmStart(c, step);
-    case ConstraintType::kHinge: return HingeConstraintWarmStart(c, step);
-    case ConstraintType::kSlider: return SliderConstraintWarmStart(c, step);
-    case ConstraintType::kGear: return GearConstraintWarmStart(c, step);
-    case ConstraintType::kRackAndPinion: return RackAndPinionConstraintWarmStart(c, step);
-    case ConstraintType::kDistance: return DistanceConstraintWarmStart(c, step);
-    case ConstraintType::kPulley: return PulleyConstraintWarmStart(c, step);
-    case ConstraintType::kCone: return ConeConstraintWarmStart(c, step);
-    case ConstraintType::kSwingTwist: return SwingTwistConstraintWarmStart(c, step);
-    case ConstraintType::kSixDof: return SixDofConstraintWarmStart(c, step);
-    case ConstraintType::kPath: return PathConstraintWarmStart(c, step);
-  }
-}
-
-inline bool SolveConstraintVelocity(const ConstraintBlock& c) {
-  switch (c.plan.type) {
-    case ConstraintType::kPoint: return PointConstraintSolveVelocity(c);
-    case ConstraintType::kFixed: return FixedConstraintSolveVelocity(c);
-    case ConstraintType::kHinge: return HingeConstraintSolveVelocity(c);
-    case ConstraintType::kSlider: return SliderConstraintSolveVelocity(c);
-    case ConstraintType::kGear: return GearConstraintSolveVelocity(c);
-    case ConstraintType::kRackAndPinion: return RackAndPinionConstraintSolveVelocity(c);
-    case ConstraintType::kDistance: return DistanceConstraintSolveVelocity(c);
-    case ConstraintType::kPulley: return PulleyConstraintSolveVelocity(c);
-    case ConstraintType::kCone: return ConeConstraintSolveVelocity(c);
-    case ConstraintType::kSwingTwist: return SwingTwistConstraintSolveVelocity(c);
-    case ConstraintType::kSixDof: return SixDofConstraintSolveVelocity(c);
-    case ConstraintType::kPath: return PathConstraintSolveVelocity(c);
-  }
-  return false;
-}
-
-inline bool SolveConstraintPosition(const StepPlan& plan, const ConstraintBlock& c,
-                                    const StepScalars& step) {
-  switch (c.plan.type) {
-    case ConstraintType::kPoint: return PointConstraintSolvePosition(c, step);
-    case ConstraintType::kFixed: return FixedConstraintSolvePosition(c, step);
-    case ConstraintType::kHinge: return HingeConstraintSolvePosition(c, step);
-    case ConstraintType::kSlider: return SliderConstraintSolvePosition(c, step);
-    case ConstraintType::kGear: return GearConstraintSolvePosition(plan, c, step);
-    case ConstraintType::kRackAndPinion:
-      return RackAndPinionConstraintSolvePosition(plan, c, step);
-    case ConstraintType::kDistance: return DistanceConstraintSolvePosition(c, step);
-    case ConstraintType::kPulley: return PulleyConstraintSolvePosition(c, step);
-    case ConstraintType::kCone: return ConeConstraintSolvePosition(c, step);
-    case ConstraintType::kSwingTwist: return SwingTwistConstraintSolvePosition(c, step);
-    case ConstraintType::kSixDof: return SixDofConstraintSolvePosition(c, step);
-    case ConstraintType::kPath: return PathConstraintSolvePosition(c, step);
-  }
-  return false;
-}
 
 // The phase clock of StepBlockWith: NoClock compiles to nothing (the plain
 // step); SteadyClock adds the time since its last lap to its phase's sum.
