@@ -19,6 +19,8 @@
 //              passes: E is not idempotent in float (a second E changes
 //              rounding bits), so stopping when no lane applied an impulse
 //              would make a world depend on the other worlds of its block.
+//              A scene without groups (every constraint solved whole) has
+//              no E: its passes stop as Gauss-Seidel's do.
 //   position:  each Newton step of the equality rows is followed by one
 //              Baumgarte step of every hard limit (as Gauss-Seidel takes);
 //              the block stops when no world's equality rows are beyond the

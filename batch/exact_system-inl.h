@@ -16,7 +16,11 @@
 //   K_kl = sum over shared dynamic bodies of  s_k s_l (m^-1 E - [r_k]x A_l),
 //          column c of -[r_k]x A_l being (column c of A_l) x r_k,
 //
-// which the chains' point-only scenes assemble without forming J.
+// which the chains' point-only scenes assemble without forming J. For a body
+// whose allowed DOFs lock axes, m^-1 E is diag(m^-1 along the free
+// translation axes, 0 along the locked ones) and I^-1 has the locked
+// rotation axes' rows and columns zeroed (LinearInverseMass,
+// BodyInverseInertia): its steps drop those components.
 //
 // Block LDL^T, right-looking, in the plan's order p = 0, 1, ...:
 //   D_p = K_pp (updated),  W_pi = D_p^-1 K_pi  for each later neighbour i,
