@@ -282,17 +282,24 @@ HWY_INLINE Vec3 LinearInverseMass(const BodyLanes& body, std::size_t offset) {
 HWY_INLINE Mat33 Coupling(const BodyLanes& body, std::size_t offset, const Mat33& linear_a,
                           const Mat33& angular_a, const Mat33& linear_b,
                           const Mat33& inv_i_angular_b) {
-  const LaneVec inv_mass = Load(body.inv_mass, offset);
-  const bool restricted = DofRestricted(body);
-  const Vec3 free = LinearInverseMass(body, offset);
   Mat33 k;
+  if (!DofRestricted(body)) {  // the scene's choice: the same branch in every chunk
+    const LaneVec inv_mass = Load(body.inv_mass, offset);
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) {
+        k.m[i][j] = hn::MulAdd(inv_mass, Dot(Row(linear_a, i), Row(linear_b, j)),
+                               Dot(Row(angular_a, i), Column(inv_i_angular_b, j)));
+      }
+    }
+    return k;
+  }
+  const Vec3 free = LinearInverseMass(body, offset);
   for (int i = 0; i < 3; ++i) {
     const Vec3 a = Row(linear_a, i);
     const Vec3 weighted{hn::Mul(a.x, free.x), hn::Mul(a.y, free.y), hn::Mul(a.z, free.z)};
     for (int j = 0; j < 3; ++j) {
-      const LaneVec angular = Dot(Row(angular_a, i), Column(inv_i_angular_b, j));
-      k.m[i][j] = restricted ? hn::Add(Dot(weighted, Row(linear_b, j)), angular)
-                             : hn::MulAdd(inv_mass, Dot(a, Row(linear_b, j)), angular);
+      k.m[i][j] = hn::Add(Dot(weighted, Row(linear_b, j)),
+                          Dot(Row(angular_a, i), Column(inv_i_angular_b, j)));
     }
   }
   return k;

@@ -94,6 +94,10 @@ class ExactJointSolve {
     }
   }
 
+  // Whether the last SolveVelocity without `accumulate` had any row group
+  // (a world whose constraints are all solved whole has none).
+  bool HasGroups() const { return !velocity_geometry_.groups.empty(); }
+
   // Returns the number of passes taken. `limits` takes one Baumgarte step of
   // every hard limit after each Newton step and says whether any moved
   // (batch/exact_inequality_rows-inl.h); `has_limits` whether there are any.

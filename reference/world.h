@@ -641,7 +641,7 @@ class World {
       // The tolerance is tested from the second pass on, the first that
       // visits the inequality rows. Without row groups (every constraint
       // solved whole) the passes are Gauss-Seidel's, and stop as its do.
-      const bool factored = !ExactRowGroups().empty();
+      const bool factored = exact.HasGroups();
       if (!bounded.empty() || !contacts_.empty()) {
         for (int pass = 1; pass < settings.velocity_iterations; ++pass) {
           remember_velocities();
