@@ -154,6 +154,7 @@ void Batch::Impl::Step(const StepSettings& settings, std::stop_token stop, const
   params.gyroscopic = settings.gyroscopic;
   params.solver = settings.solver;
   params.exact_tolerance = settings.exact_tolerance;
+  params.exact_curvature_velocity = settings.exact_curvature_velocity;
   params.exact_stiffness = settings.exact_geometric_stiffness * substep_dt;
   params.exact_first_stiffness =
       previous_substep_dt_ > 0.0f ? params.exact_stiffness * (substep_dt / previous_substep_dt_)

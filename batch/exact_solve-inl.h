@@ -12,6 +12,11 @@
 // Motors, friction and limits (bounded rows) are solved around this by
 // Gauss-Seidel, K's factors reused (batch/exact_inequality_rows-inl.h).
 //
+// Curvature correction (scenes whose joints are all equalities, after the
+//   integration): v += w M~^-1 J^T K^-1 (C(q_n) - C(q~)) / dt with the
+//   velocity solve's factors, the normal velocity the curved path needs
+//   over the step (exact::CurvatureVelocity).
+//
 // Position phase (replaces the Baumgarte iterations): Newton steps on C = 0
 //   at the current poses (J and K re-assembled there), lambda = K^-1 (-C),
 //   applied as position and rotation steps, in each world until every
@@ -187,19 +192,16 @@ void ApplyVelocityImpulses(const StepPlan& plan, std::byte* block, const ExactSc
   }
 }
 
-// One Newton step of the equality rows in the worlds scratch.moving marks
-// (C's negation in rhs and the other groups' rows from the convergence
-// check).
+// Each dynamic body's step for the impulses Solve left in rhs, summed over
+// its groups (as J^T lambda) into scratch.translation and scratch.rotation:
+// linear m^-1 J_L^T lambda, angular I^-1 J_A^T lambda, with the lever arms
+// cached in the point parts, the other groups' rows in scratch.jacobians and
+// the inverse inertias in scratch.inverse_inertia. One step moves each body
+// once: rotation steps applied group after group would compose, and a
+// link's two nearly opposite turns would not cancel.
 template <class Visit>
-void NewtonStep(const StepPlan& plan, std::byte* block, ExactScratch& scratch, Visit&& visit) {
+void SumBodySteps(const StepPlan& plan, std::byte* block, ExactScratch& scratch, Visit&& visit) {
   const ExactSolvePlan& exact = plan.exact;
-  Inertia(plan, block, scratch, 0.0f);
-  AssembleK(plan, block, scratch);
-  Factor(exact, scratch, visit);
-  Solve(exact, scratch);
-  // One Newton step moves each body once, by the sum of its groups'
-  // steps (as J^T lambda): rotation steps applied group after group would
-  // compose, and a link's two nearly opposite turns would not cancel.
   for (Vec3Lanes& sum : scratch.translation) {
     ForEachChunk([&](std::size_t offset) { StoreVec3(ZeroVec3(), sum, offset); });
   }
@@ -226,33 +228,35 @@ void NewtonStep(const StepPlan& plan, std::byte* block, ExactScratch& scratch, V
       const Vec3 lambda = LoadVec3(scratch.rhs[p], offset);
       if (c.bodies.motion1 == MotionType::kDynamic) {
         AddBodyStep(*c.bodies.body1, scratch.inverse_inertia[c.plan.body1], Splat(-1.0f),
-                           LoadVec3(part.r1, offset), lambda,
-                           scratch.translation[c.plan.body1], scratch.rotation[c.plan.body1],
-                           offset);
+                    LoadVec3(part.r1, offset), lambda, scratch.translation[c.plan.body1],
+                    scratch.rotation[c.plan.body1], offset);
       }
       if (c.bodies.motion2 == MotionType::kDynamic) {
         AddBodyStep(*c.bodies.body2, scratch.inverse_inertia[c.plan.body2], Splat(1.0f),
-                           LoadVec3(part.r2, offset), lambda,
-                           scratch.translation[c.plan.body2], scratch.rotation[c.plan.body2],
-                           offset);
+                    LoadVec3(part.r2, offset), lambda, scratch.translation[c.plan.body2],
+                    scratch.rotation[c.plan.body2], offset);
       }
     });
   }
+}
+
+// One Newton step of the equality rows in the worlds scratch.moving marks
+// (C's negation in rhs and the other groups' rows from the convergence
+// check).
+template <class Visit>
+void NewtonStep(const StepPlan& plan, std::byte* block, ExactScratch& scratch, Visit&& visit) {
+  const ExactSolvePlan& exact = plan.exact;
+  Inertia(plan, block, scratch, 0.0f);
+  AssembleK(plan, block, scratch);
+  Factor(exact, scratch, visit);
+  Solve(exact, scratch);
+  SumBodySteps(plan, block, scratch, visit);
   // The trust region (kExactMaxNewtonTurn): in a world where some body
   // would turn further, every body's step is scaled by the same factor. A
   // world whose step is NaN keeps scale 1 (the comparison is false): it is
   // lost either way, and the health check flags it.
-  const LaneVec max_turn = Splat(kExactMaxNewtonTurn);
   ForEachChunk([&](std::size_t offset) {
-    LaneVec largest_squared = Zero();
-    for (std::size_t b = 0; b < plan.bodies.size(); ++b) {
-      if (plan.bodies[b].motion != MotionType::kDynamic) continue;
-      largest_squared =
-          hn::Max(largest_squared, LengthSquared(LoadVec3(scratch.rotation[b], offset)));
-    }
-    const LaneMask too_far = hn::Gt(largest_squared, hn::Mul(max_turn, max_turn));
-    Store(hn::IfThenElse(too_far, hn::Div(max_turn, hn::Sqrt(largest_squared)), Splat(1.0f)),
-          scratch.step_scale, offset);
+    Store(TrustRegionScale(plan, scratch, offset), scratch.step_scale, offset);
   });
   for (std::size_t b = 0; b < plan.bodies.size(); ++b) {
     if (plan.bodies[b].motion != MotionType::kDynamic) continue;
@@ -275,10 +279,146 @@ void NewtonStep(const StepPlan& plan, std::byte* block, ExactScratch& scratch, V
   }
 }
 
+// C at the current poses for every group into `errors`, leaving the cached
+// lever arms and rows as they are (CurvatureVelocity corrects along the
+// velocity solve's).
+inline void ErrorsAtCurrentPoses(const StepPlan& plan, std::byte* block,
+                                 std::vector<Vec3Lanes>& errors) {
+  const ExactSolvePlan& exact = plan.exact;
+  for (std::size_t p = 0; p < exact.group_count(); ++p) {
+    const ConstraintBlock c = GroupAt(plan, block, p);
+    const bool point = IsPoint(exact, p);
+    ForEachChunk([&](std::size_t offset) {
+      Vec3 error;
+      if (point) {
+        const PointGeometry& anchors = PointAnchors(c);
+        const Vec3 p1 = Add(LoadVec3(c.bodies.body1->position, offset),
+                            Rotate(LoadQuat(c.bodies.body1->rotation, offset),
+                                   LoadVec3(anchors.r1_local, offset)));
+        const Vec3 p2 = Add(LoadVec3(c.bodies.body2->position, offset),
+                            Rotate(LoadQuat(c.bodies.body2->rotation, offset),
+                                   LoadVec3(anchors.r2_local, offset)));
+        error = Sub(p2, p1);
+      } else {
+        error = RowsOfChunk(plan, c, exact.order[p].rows, true, offset).error;
+      }
+      StoreVec3(error, errors[p], offset);
+    });
+  }
+}
+
+// Whether the step takes the curvature correction (CurvatureVelocity): a
+// scene with row groups whose joints are all equalities, without contacts.
+HWY_INLINE bool CurvatureApplies(const StepPlan& plan, bool curvature) {
+  return curvature && plan.exact.group_count() != 0 && plan.exact.inequality.empty() &&
+         plan.contacts.empty();
+}
+
+// Per world, the weight of the curvature correction, into
+// scratch.velocity_weight: 1 while every dynamic body's tr(G I^-1) is at
+// most half of kExactCurvatureTransverseLimit (its header comment), falling
+// linearly to 0 at the limit, so that a world's step changes continuously as
+// its pulls grow. G = dt * sum over the body's point groups of
+// max(0, s lambda . r) (E - r^ r^T), with this step's impulses and the
+// velocity solve's lever arms; tr((E - r^ r^T) I^-1) = tr(I^-1) -
+// r^T I^-1 r / |r|^2. NaN pulls weigh 0.
+inline void CurvatureWeights(const StepPlan& plan, std::byte* block, ExactScratch& scratch,
+                             float dt) {
+  for (std::size_t b = 0; b < plan.bodies.size(); ++b) {
+    ForEachChunk([&](std::size_t offset) { Store(Zero(), scratch.transverse_ratio[b], offset); });
+  }
+  const LaneVec dt_lanes = Splat(dt);
+  ForEachPull(plan, block, [&](std::size_t b, const BodyLanes& body, const Vec3& r,
+                               LaneVec pull, std::size_t offset) {
+    const Sym33 inverse = BodyInverseInertia(body, offset);
+    LaneMask nonzero;
+    const LaneVec along =
+        hn::Mul(Dot(r, Multiply(inverse, r)), ReciprocalOrZero(LengthSquared(r), nonzero));
+    const LaneVec trace = hn::Add(hn::Add(inverse.xx, inverse.yy), inverse.zz);
+    const LaneVec ratio = hn::Mul(hn::Mul(dt_lanes, hn::Max(pull, Zero())), hn::Sub(trace, along));
+    Store(hn::Add(Load(scratch.transverse_ratio[b], offset), ratio), scratch.transverse_ratio[b],
+          offset);
+  });
+  const LaneVec fade = Splat(2.0f / kExactCurvatureTransverseLimit);
+  ForEachChunk([&](std::size_t offset) {
+    LaneVec largest = Zero();
+    for (std::size_t b = 0; b < plan.bodies.size(); ++b) {
+      if (plan.bodies[b].motion != MotionType::kDynamic) continue;
+      largest = hn::Max(largest, Load(scratch.transverse_ratio[b], offset));
+    }
+    // 2 - 2 tr / limit, clamped to [0, 1] (a NaN fails the comparison).
+    const LaneVec weight =
+        hn::Min(Splat(1.0f), hn::Max(Zero(), hn::NegMulAdd(largest, fade, Splat(2.0f))));
+    Store(hn::IfThenElseZero(hn::Gt(weight, Zero()), weight), scratch.velocity_weight, offset);
+  });
+}
+
+// The curvature correction of the velocities (StepSettings::
+// exact_curvature_velocity), after the integration and before the Newton
+// steps: SHAKE's first chord step (Ryckaert, Ciccotti and Berendsen, 1977)
+// taken by the velocities alone,
+//   v += w M~^-1 J(q_n)^T K^-1 (C(q_n) - C(q~)) / dt,
+// with the velocity solve's J, inverse inertias M~ and factors of K (no new
+// factorisation), C at the step's start q_n (scratch.start_error, from the
+// velocity phase) and at the integrated poses q~, and w the world's weight
+// (CurvatureWeights). The velocity solve leaves v tangent to the joints at
+// the step's start; along a curved path the poses then drift off by
+// C(q~) - C(q_n), and this is the normal velocity that keeps them on:
+// without it the next velocity solve removes that component, and the
+// motion loses energy at first order in dt (docs/accuracy.md, "Energy").
+// What C(q_n) was (at most the tolerance the last Newton steps stopped at)
+// is the positions' to correct, not the velocities'. The correction is
+// explicit in the transverse swing the joints' pulls drive, hence the
+// weight. As a Newton step, the world's correction is scaled down whole
+// where it would turn a body by more than kExactMaxNewtonTurn (in dt). The
+// positions are left to the Newton steps.
+template <class Visit>
+void CurvatureVelocity(const StepPlan& plan, std::byte* block, ExactScratch& scratch, float dt,
+                       Visit&& visit) {
+  CurvatureWeights(plan, block, scratch, dt);
+  bool any = false;
+  ForEachChunk([&](std::size_t offset) {
+    any |= AnyLane(hn::Gt(Load(scratch.velocity_weight, offset), Zero()));
+  });
+  if (!any) return;
+  ErrorsAtCurrentPoses(plan, block, scratch.rhs);
+  for (std::size_t p = 0; p < plan.exact.group_count(); ++p) {
+    ForEachChunk([&](std::size_t offset) {
+      StoreVec3(Sub(LoadVec3(scratch.start_error[p], offset), LoadVec3(scratch.rhs[p], offset)),
+                scratch.rhs[p], offset);
+    });
+  }
+  Solve(plan.exact, scratch);
+  SumBodySteps(plan, block, scratch, visit);
+  const LaneVec inverse_dt = Splat(1.0f / dt);
+  ForEachChunk([&](std::size_t offset) {
+    const LaneVec scale = TrustRegionScale(plan, scratch, offset);
+    Store(hn::Mul(hn::Mul(Load(scratch.velocity_weight, offset), scale), inverse_dt),
+          scratch.step_scale, offset);
+  });
+  for (std::size_t b = 0; b < plan.bodies.size(); ++b) {
+    if (plan.bodies[b].motion != MotionType::kDynamic) continue;
+    BodyLanes& body = BodyAt(plan, block, b);
+    ForEachChunk([&](std::size_t offset) {
+      // Worlds of weight 0 keep every bit (w * x + v is not v for x = NaN).
+      const LaneVec factor = Load(scratch.step_scale, offset);
+      const LaneMask takes = hn::Gt(factor, Zero());
+      const Vec3 v = LoadVec3(body.linear_velocity, offset);
+      const Vec3 w = LoadVec3(body.angular_velocity, offset);
+      const Vec3 linear = LockTranslation(body, LoadVec3(scratch.translation[b], offset), offset);
+      StoreVec3(Select(takes, MulAdd(linear, factor, v), v), body.linear_velocity, offset);
+      StoreVec3(Select(takes, MulAdd(LoadVec3(scratch.rotation[b], offset), factor, w), w),
+                body.angular_velocity, offset);
+    });
+  }
+}
+
 }  // namespace exact
 
 // Velocity phase: J v = 0 for every group at once (see the header comment),
 // with the geometric stiffness `stiffness` * (pull) (Inertia). With
+// `curvature` (and exact::CurvatureApplies) the joints' errors at the
+// step's start are kept for exact::CurvatureVelocity. With
 // inequality rows (motors, friction, limits; batch/exact_inequality_rows-inl.h)
 // `iterations` passes of block Gauss-Seidel around the exact solve, which
 // factors K once and ends with the equality rows exact; with a velocity
@@ -294,7 +434,7 @@ void NewtonStep(const StepPlan& plan, std::byte* block, ExactScratch& scratch, V
 // block, spread thin so that its requests never queue up).
 template <class Visit, class Contacts>
 void ExactSolveVelocity(const StepPlan& plan, std::byte* block, ExactScratch& scratch,
-                        float stiffness, const StepScalars& step, int iterations,
+                        float stiffness, bool curvature, const StepScalars& step, int iterations,
                         VelocityConvergence* convergence, Visit&& visit, Contacts&& contacts) {
   const ExactSolvePlan& exact = plan.exact;
   // A scene whose constraints are all solved whole (distance, pulley,
@@ -307,6 +447,9 @@ void ExactSolveVelocity(const StepPlan& plan, std::byte* block, ExactScratch& sc
     exact::GroupJacobians(plan, block, scratch);
     exact::Inertia(plan, block, scratch, stiffness);
     exact::AssembleK(plan, block, scratch);
+  }
+  if (exact::CurvatureApplies(plan, curvature)) {
+    exact::ErrorsAtCurrentPoses(plan, block, scratch.start_error);
   }
   // The contacts' rows from the velocities after the forces (their
   // restitution reads them), as in the Gauss-Seidel step; their warm start
@@ -348,20 +491,26 @@ void ExactSolveVelocity(const StepPlan& plan, std::byte* block, ExactScratch& sc
   if (convergence) convergence->Finish();
 }
 
-// Position phase: Newton steps until each world's groups are within
-// `tolerance`, at most `passes`, each followed by a Baumgarte step of every
-// hard limit and then every contact (`contacts`, as for the velocity phase).
-// Returns the number of passes taken (by the slowest world of the block).
+// Position phase: in a scene whose joints are all equality row groups (no
+// inequality rows, no contacts) and with `curvature`, the curvature
+// correction of the velocities (exact::CurvatureVelocity); then Newton
+// steps until each world's groups are within `tolerance`, at most `passes`,
+// each followed by a Baumgarte step of every hard limit and then every
+// contact (`contacts`, as for the velocity phase). Returns the number of
+// Newton passes taken (by the slowest world of the block).
 template <class Visit, class Contacts>
-int ExactSolvePosition(const StepPlan& plan, std::byte* block, ExactScratch& scratch, int passes,
-                       float tolerance, const StepScalars& step, Visit&& visit,
-                       Contacts&& contacts) {
+int ExactSolvePosition(const StepPlan& plan, std::byte* block, ExactScratch& scratch,
+                       bool curvature, int passes, float tolerance, const StepScalars& step,
+                       Visit&& visit, Contacts&& contacts) {
   const ExactSolvePlan& exact = plan.exact;
   const LaneVec tolerance_squared = Splat(tolerance * tolerance);
   // Whether a hard limit or a contact moved a world in the last pass
   // (unknown before the first: batch/exact_inequality_rows-inl.h).
   const bool limited = exact.hard_limits || !plan.contacts.empty();
   bool limits_moved = limited;
+  if (exact::CurvatureApplies(plan, curvature)) {
+    exact::CurvatureVelocity(plan, block, scratch, step.delta_time, visit);
+  }
   int pass = 0;
   for (; pass < passes; ++pass) {
     // The mass metric (no stiffness); K only once some world has to move.

@@ -70,7 +70,12 @@ struct ExactScratch {
   std::vector<Sym33Lanes> inverse_inertia;        // per dynamic body, this solve's
   std::vector<Sym33Lanes> stiffness;              // per dynamic body: G
   LaneArray moving;                  // position phase: 1 where still correcting
-  LaneArray step_scale;              // position phase: the trust region's factor
+  LaneArray step_scale;  // position phase: the trust region's factor (times w / dt: CurvatureVelocity)
+  // The curvature correction (CurvatureVelocity): per world its weight,
+  // and per group C at the step's start.
+  LaneArray velocity_weight;
+  std::vector<Vec3Lanes> start_error;
+  std::vector<LaneArray> transverse_ratio;  // per body: tr(G I^-1) of this step's pulls
 
   void Fit(const StepPlan& step_plan) {
     const ExactSolvePlan& plan = step_plan.exact;
@@ -78,9 +83,11 @@ struct ExactScratch {
     rotation.resize(step_plan.bodies.size());
     inverse_inertia.resize(step_plan.bodies.size());
     stiffness.resize(step_plan.bodies.size());
+    transverse_ratio.resize(step_plan.bodies.size());
     diagonal.resize(plan.group_count());
     blocks.resize(plan.blocks.size());
     rhs.resize(plan.group_count());
+    start_error.resize(plan.group_count());
     jacobians.resize(plan.only_points() ? 0 : plan.group_count());
     std::size_t widest = 0;
     for (const auto& later : plan.later) widest = later.size() > widest ? later.size() : widest;
@@ -211,6 +218,49 @@ inline void GroupJacobians(const StepPlan& plan, std::byte* block, ExactScratch&
   }
 }
 
+// Calls f(body index, body, r, pull, offset) for each dynamic body of each
+// point group, chunk by chunk: r its lever arm (cached in the point part),
+// pull = s lambda . r with lambda the group's last velocity impulse and
+// s = -1 on body 1 (positive when the joint pulls the body's anchor
+// outward, along r).
+template <class F>
+void ForEachPull(const StepPlan& plan, std::byte* block, F&& f) {
+  const ExactSolvePlan& exact = plan.exact;
+  for (std::size_t p = 0; p < exact.group_count(); ++p) {
+    if (!IsPoint(exact, p)) continue;
+    const ConstraintBlock c = GroupAt(plan, block, p);
+    const PointLanes& part = PointPart(c);
+    ForEachChunk([&](std::size_t offset) {
+      const Vec3 lambda = LoadVec3(part.persistent.total_lambda, offset);
+      if (c.bodies.motion1 == MotionType::kDynamic) {
+        const Vec3 r = LoadVec3(part.r1, offset);
+        f(c.plan.body1, *c.bodies.body1, r, hn::Neg(Dot(lambda, r)), offset);
+      }
+      if (c.bodies.motion2 == MotionType::kDynamic) {
+        const Vec3 r = LoadVec3(part.r2, offset);
+        f(c.plan.body2, *c.bodies.body2, r, Dot(lambda, r), offset);
+      }
+    });
+  }
+}
+
+// The largest step's trust-region factor per world (kExactMaxNewtonTurn):
+// max_turn / (the largest |rotation step| over dynamic bodies, from
+// scratch.rotation) where that is larger than max_turn, else 1. A world
+// whose step is NaN keeps 1 (the comparison is false).
+HWY_INLINE LaneVec TrustRegionScale(const StepPlan& plan, const ExactScratch& scratch,
+                                    std::size_t offset) {
+  const LaneVec max_turn = Splat(kExactMaxNewtonTurn);
+  LaneVec largest_squared = Zero();
+  for (std::size_t b = 0; b < plan.bodies.size(); ++b) {
+    if (plan.bodies[b].motion != MotionType::kDynamic) continue;
+    largest_squared =
+        hn::Max(largest_squared, LengthSquared(LoadVec3(scratch.rotation[b], offset)));
+  }
+  const LaneMask too_far = hn::Gt(largest_squared, hn::Mul(max_turn, max_turn));
+  return hn::IfThenElse(too_far, hn::Div(max_turn, hn::Sqrt(largest_squared)), Splat(1.0f));
+}
+
 // Each dynamic body's inverse inertia for this solve (LeverArms first): I^-1 at its current
 // rotation, or with `stiffness` > 0 (velocity phase) (I + G)^-1, where G
 // sums over the body's point groups  stiffness * max(0, s lambda . r) (E - r^ r^T)
@@ -226,7 +276,6 @@ inline void GroupJacobians(const StepPlan& plan, std::byte* block, ExactScratch&
 // add no stiffness.
 inline void Inertia(const StepPlan& plan, std::byte* block, ExactScratch& scratch,
                     float stiffness) {
-  const ExactSolvePlan& exact = plan.exact;
   for (std::size_t b = 0; b < plan.bodies.size(); ++b) {
     if (plan.bodies[b].motion != MotionType::kDynamic) continue;
     const BodyLanes& body = BodyAt(plan, block, b);
@@ -237,23 +286,12 @@ inline void Inertia(const StepPlan& plan, std::byte* block, ExactScratch& scratc
   }
   if (stiffness <= 0.0f) return;
   const LaneVec factor = Splat(stiffness);
-  for (std::size_t p = 0; p < exact.group_count(); ++p) {
-    if (!IsPoint(exact, p)) continue;
-    const ConstraintBlock c = GroupAt(plan, block, p);
-    const PointLanes& part = PointPart(c);
-    ForEachChunk([&](std::size_t offset) {
-      const Vec3 lambda = LoadVec3(part.persistent.total_lambda, offset);
-      const auto add = [&](std::size_t body, const Vec3Lanes& lever, bool body2) {
-        const Vec3 r = LoadVec3(lever, offset);
-        const LaneVec pull = body2 ? Dot(lambda, r) : hn::Neg(Dot(lambda, r));
-        Sym33 g = LoadSym33(scratch.stiffness[body], offset);
-        AddTransverseStiffness(hn::Mul(factor, hn::Max(pull, Zero())), r, g);
-        StoreSym33(g, scratch.stiffness[body], offset);
-      };
-      if (c.bodies.motion1 == MotionType::kDynamic) add(c.plan.body1, part.r1, false);
-      if (c.bodies.motion2 == MotionType::kDynamic) add(c.plan.body2, part.r2, true);
-    });
-  }
+  ForEachPull(plan, block, [&](std::size_t b, const BodyLanes&, const Vec3& r, LaneVec pull,
+                               std::size_t offset) {
+    Sym33 g = LoadSym33(scratch.stiffness[b], offset);
+    AddTransverseStiffness(hn::Mul(factor, hn::Max(pull, Zero())), r, g);
+    StoreSym33(g, scratch.stiffness[b], offset);
+  });
   for (std::size_t b = 0; b < plan.bodies.size(); ++b) {
     if (plan.bodies[b].motion != MotionType::kDynamic) continue;
     ForEachChunk([&](std::size_t offset) {

@@ -199,7 +199,7 @@ bool StepBlockWith(const StepPlan& plan, std::byte* block, const std::byte* next
     if (exact) {
       ExactSolveVelocity(plan, block, scratch,
                          substep == 0 ? params.exact_first_stiffness : params.exact_stiffness,
-                         step, params.velocity_iterations,
+                         params.exact_curvature_velocity, step, params.velocity_iterations,
                          convergence ? &*convergence : nullptr, [&] { prefetch.Visit(); },
                          ContactPhases<decltype(for_each_contact_of_exact)>{
                              for_each_contact_of_exact, contact_scalars, ratio});
@@ -235,8 +235,9 @@ bool StepBlockWith(const StepPlan& plan, std::byte* block, const std::byte* next
     clock.Lap(StepPhase::kIntegration);
 
     if (exact) {
-      ExactSolvePosition(plan, block, scratch, params.position_iterations,
-                         params.exact_tolerance, step, [&] { prefetch.Visit(); },
+      ExactSolvePosition(plan, block, scratch, params.exact_curvature_velocity,
+                         params.position_iterations, params.exact_tolerance, step,
+                         [&] { prefetch.Visit(); },
                          ContactPhases<decltype(for_each_contact_of_exact)>{
                              for_each_contact_of_exact, contact_scalars, ratio});
       clock.Lap(StepPhase::kPosition);

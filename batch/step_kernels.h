@@ -25,6 +25,7 @@ struct StepParams {
   bool gyroscopic;  // StepSettings::gyroscopic
   JointSolver solver;     // kExact: batch/exact_solve-inl.h (the plan allows it)
   float exact_tolerance;  // m
+  bool exact_curvature_velocity;
   // StepSettings::exact_geometric_stiffness x substep dt, times dt / dt_prev
   // in the first substep: the stiffness comes from the last solve's impulses,
   // which acted over the previous substep (1 where there was none).

@@ -235,6 +235,9 @@ void BindStepAndBatchOptions(py::module_& m) {
                      "m or rad: EXACT's Newton steps stop at this error of every row group")
       .def_readwrite("exact_geometric_stiffness", &StepSettings::exact_geometric_stiffness,
                      "EXACT: implicit geometric stiffness, x the backward-Euler amount (0: off)")
+      .def_readwrite("exact_curvature_velocity", &StepSettings::exact_curvature_velocity,
+                     "EXACT, scenes whose joints are all equalities: add the normal velocity "
+                     "the joints' curvature needs over a step (off loses energy at first order)")
       .def_readwrite("speculative_contact_distance", &StepSettings::speculative_contact_distance,
                      "m: shapes closer than this make contact points")
       .def_readwrite("penetration_slop", &StepSettings::penetration_slop,

@@ -15,6 +15,9 @@
 //              (s = -1 on body 1, lambda_prev the group's impulse of the last
 //              velocity solve, kept in `impulses`): the implicit geometric
 //              stiffness of batch/exact_system-inl.h
+//   curvature: in a world whose joints are all equality row groups, after
+//              the integration, v += w M~^-1 J^T K^-1 (C(q_n) - C) / dt
+//              with the velocity solve's J, K and C(q_n) (CurvatureVelocity)
 //   position:  up to `passes` times, while some group's |C| > tolerance:
 //              lambda = K^-1 (-C) at the current poses,
 //              x += s m^-1 (J^T lambda)_linear,
@@ -29,6 +32,7 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <functional>
 #include <vector>
@@ -98,6 +102,52 @@ class ExactJointSolve {
   // (a world whose constraints are all solved whole has none).
   bool HasGroups() const { return !velocity_geometry_.groups.empty(); }
 
+  // The curvature correction after the integration (batch/exact_solve-inl.h,
+  // CurvatureVelocity), for a world whose joints are all equality row
+  // groups: v += w s M~^-1 J^T K^-1 (C(q_n) - C(q~)) / dt with the last
+  // velocity solve's J, K, inverse inertias M~ = (I + G)^-1 and errors
+  // C(q_n), C(q~) at the current poses, s the
+  // trust region's factor (no body's rotation step above
+  // kExactMaxNewtonTurn) and w = clamp(2 - 2 t / kExactCurvatureTransverseLimit,
+  // 0, 1), t the largest tr(G I^-1) over the dynamic bodies (G of this
+  // step's impulses with factor dt).
+  void CurvatureVelocity(T dt) {
+    const Geometry& g = velocity_geometry_;
+    if (g.groups.empty()) return;
+    std::vector<T> ratio(bodies_.size(), T(0));
+    ForEachPull(g.groups, [&](std::size_t body, const Vec3<T>& r, T pull) {
+      const Mat33<T> inverse = bodies_[body].InverseInertia();
+      const T along = r.squaredNorm() > T(0) ? r.dot(inverse * r) / r.squaredNorm() : T(0);
+      ratio[body] += dt * std::max(T(0), pull) * (inverse.trace() - along);
+    });
+    T hardest = T(0);
+    for (std::size_t body = 0; body < bodies_.size(); ++body) {
+      if (column_[body] != kNotUnknown) hardest = std::max(hardest, ratio[body]);
+    }
+    const T weight =
+        std::min(T(1), std::max(T(0), T(2) - T(2) * hardest / T(kExactCurvatureTransverseLimit)));
+    if (!(weight > T(0))) return;
+    // The drift C(q~) - C(q_n), C(q_n) from the velocity solve's rows.
+    Vector drift(g.j.rows());
+    std::size_t row = 0;
+    for (const ExactRowGroup<T>& group : rows_()) {
+      for (const ExactRow<T>& r : group.rows) drift[row++] = r.error;
+    }
+    row = 0;
+    for (const ExactRowGroup<T>& group : g.groups) {
+      for (const ExactRow<T>& r : group.rows) drift[row++] -= r.error;
+    }
+    const Vector impulse = g.j.transpose() * g.k.ldlt().solve(-drift);
+    std::vector<Vec3<T>> rotations;
+    const T factor = weight * RotationSteps(g, impulse, rotations) / dt;
+    for (std::size_t body = 0; body < bodies_.size(); ++body) {
+      if (column_[body] == kNotUnknown) continue;
+      Body<T>& bd = bodies_[body];
+      bd.AddLinearVelocityStep(factor * bd.inv_mass * impulse.template segment<3>(column_[body]));
+      bd.angular_velocity += factor * rotations[body];
+    }
+  }
+
   // Returns the number of passes taken. `limits` takes one Baumgarte step of
   // every hard limit after each Newton step and says whether any moved
   // (batch/exact_inequality_rows-inl.h); `has_limits` whether there are any.
@@ -122,17 +172,8 @@ class ExactJointSolve {
       if (!converged) {
         const Vector lambda = g.k.ldlt().solve(-c);
         const Vector impulse = g.j.transpose() * lambda;
-        // The trust region: no body turns more than kExactMaxNewtonTurn, the
-        // whole step scaled by one factor.
-        std::vector<Vec3<T>> rotations(bodies_.size(), Vec3<T>::Zero());
-        T largest = T(0);
-        for (std::size_t body = 0; body < bodies_.size(); ++body) {
-          if (column_[body] == kNotUnknown) continue;
-          rotations[body] = g.inverse_inertia[body] * impulse.template segment<3>(column_[body] + 3);
-          largest = std::max(largest, rotations[body].norm());
-        }
-        const T max_turn = T(kExactMaxNewtonTurn);
-        const T scale = largest > max_turn ? max_turn / largest : T(1);
+        std::vector<Vec3<T>> rotations;
+        const T scale = RotationSteps(g, impulse, rotations);
         for (std::size_t body = 0; body < bodies_.size(); ++body) {
           if (column_[body] == kNotUnknown) continue;
           Body<T>& bd = bodies_[body];
@@ -154,23 +195,49 @@ class ExactJointSolve {
     Matrix j, k;
   };
 
+  // Calls f(body, r, pull) for each dynamic body of each point group: r its
+  // lever arm, pull = s lambda . r with lambda the group's impulse of the
+  // last velocity solve (impulses_) and s = -1 on body 1.
+  template <class F>
+  void ForEachPull(const std::vector<ExactRowGroup<T>>& groups, F&& f) const {
+    for (std::size_t k = 0; k < groups.size() && k < impulses_.size(); ++k) {
+      const ExactRowGroup<T>& group = groups[k];
+      if (!group.point) continue;
+      if (column_[group.body1] != kNotUnknown) f(group.body1, group.r1, -impulses_[k].dot(group.r1));
+      if (column_[group.body2] != kNotUnknown) f(group.body2, group.r2, impulses_[k].dot(group.r2));
+    }
+  }
+
+  // Each dynamic body's rotation step I~^-1 (J^T lambda)_angular for the
+  // impulse J^T lambda, into `rotations`, and the trust region's factor: no
+  // body turns more than kExactMaxNewtonTurn, the whole step scaled by one
+  // factor (1 if none would).
+  T RotationSteps(const Geometry& g, const Vector& impulse,
+                  std::vector<Vec3<T>>& rotations) const {
+    rotations.assign(bodies_.size(), Vec3<T>::Zero());
+    T largest = T(0);
+    for (std::size_t body = 0; body < bodies_.size(); ++body) {
+      if (column_[body] == kNotUnknown) continue;
+      rotations[body] = g.inverse_inertia[body] * impulse.template segment<3>(column_[body] + 3);
+      largest = std::max(largest, rotations[body].norm());
+    }
+    const T max_turn = T(kExactMaxNewtonTurn);
+    return largest > max_turn ? max_turn / largest : T(1);
+  }
+
   Geometry Assemble(std::vector<ExactRowGroup<T>> groups, T stiffness) const {
     Geometry g;
     g.groups = std::move(groups);
     impulses_.resize(g.groups.size(), Vec3<T>::Zero());  // zero before the first solve
     g.inverse_inertia.resize(bodies_.size(), Mat33<T>::Zero());
     std::vector<Mat33<T>> stiffness_of(bodies_.size(), Mat33<T>::Zero());
-    const auto pull = [&](std::size_t body, const Vec3<T>& r, T sign, const Vec3<T>& lambda) {
-      const T w = stiffness * std::max(T(0), sign * lambda.dot(r));
-      if (w > T(0)) stiffness_of[body] += w * (Mat33<T>::Identity() - r * r.transpose() / r.squaredNorm());
-    };
     if (stiffness > T(0)) {
-      for (std::size_t k = 0; k < g.groups.size(); ++k) {
-        const ExactRowGroup<T>& group = g.groups[k];
-        if (!group.point) continue;
-        if (column_[group.body1] != kNotUnknown) pull(group.body1, group.r1, T(-1), impulses_[k]);
-        if (column_[group.body2] != kNotUnknown) pull(group.body2, group.r2, T(1), impulses_[k]);
-      }
+      ForEachPull(g.groups, [&](std::size_t body, const Vec3<T>& r, T pull) {
+        const T w = stiffness * std::max(T(0), pull);
+        if (w > T(0)) {
+          stiffness_of[body] += w * (Mat33<T>::Identity() - r * r.transpose() / r.squaredNorm());
+        }
+      });
     }
     for (std::size_t body = 0; body < bodies_.size(); ++body) {
       if (column_[body] == kNotUnknown) continue;

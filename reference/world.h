@@ -658,6 +658,9 @@ class World {
         }
       }
       Integrate(dt);
+      if (settings.exact_curvature_velocity && bounded.empty() && contacts_.empty()) {
+        exact.CurvatureVelocity(dt);
+      }
       exact.SolvePosition(
           settings.position_iterations, T(settings.exact_tolerance),
           [&] {

@@ -46,7 +46,7 @@ Options RunOptions(int argc, char** argv) {
                   "--velocity-iterations", "--velocity-tolerance", "--position-iterations",
                   "--warmup", "--seed",
                   "--mass-range-limit", "--solver", "--exact-tolerance",
-                  "--geometric-stiffness", kRecordOption,
+                  "--geometric-stiffness", "--curvature-velocity", kRecordOption,
                   kRecordWorldsOption},
                  {"--profile"});
 }
@@ -81,6 +81,13 @@ RunSetup ParseRunSetup(const Options& options) {
   setup.settings.velocity_iterations =
       int(options.Number("--velocity-iterations", 10, 0, 10'000));
   setup.settings.position_iterations = int(options.Number("--position-iterations", 2, 0, 10'000));
+  if (options.Has("--curvature-velocity")) {
+    const std::string on = options.Text("--curvature-velocity");
+    if (on != "on" && on != "off") {
+      throw UsageError("--curvature-velocity = '" + on + "': accepted on (the default) and off");
+    }
+    setup.settings.exact_curvature_velocity = on == "on";
+  }
   const std::string solver = options.Text("--solver", "gauss-seidel");
   if (solver == "exact") {
     setup.settings.solver = JointSolver::kExact;

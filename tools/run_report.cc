@@ -94,9 +94,11 @@ void PrintRunReport(const Batch& batch, const SceneActions& actions, const RunFa
   std::printf("precision:            float\n");
   std::printf("mass-range limit:     %s\n", facts.mass_range.c_str());
   if (settings.solver == JointSolver::kExact) {
-    std::printf("solver:               exact: joints solved at once (geometric stiffness %g), up "
-                "to %d Newton position steps to %g m, %d substep(s)\n",
-                double(settings.exact_geometric_stiffness), settings.position_iterations,
+    std::printf("solver:               exact: joints solved at once (geometric stiffness %g, "
+                "curvature velocity %s), up to %d Newton position steps to %g m, %d "
+                "substep(s)\n",
+                double(settings.exact_geometric_stiffness),
+                settings.exact_curvature_velocity ? "on" : "off", settings.position_iterations,
                 double(settings.exact_tolerance), settings.substeps);
   } else {
     std::printf("iterations:           %d velocity, %d position, %d substep(s), Baumgarte %g\n",

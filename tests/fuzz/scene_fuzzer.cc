@@ -435,6 +435,7 @@ StepSettings Settings(FuzzedDataProvider& in) {
     s.position_iterations = in.ConsumeIntegralInRange<int>(0, 30);
     if (in.ConsumeBool()) s.exact_tolerance = Float(in, 0, 1e-2f);
     if (in.ConsumeBool()) s.exact_geometric_stiffness = Float(in, 0, 2);
+    if (in.ConsumeBool()) s.exact_curvature_velocity = false;
   }
   return s;
 }
