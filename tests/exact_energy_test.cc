@@ -13,7 +13,8 @@
 // halves it, within a third); no run gains energy (it would be an
 // instability), the heavy chains included, where the correction fades out
 // (kExactCurvatureTransverseLimit) and their joints hold; without it the
-// exact solve loses no more than Gauss-Seidel at Jolt's defaults.
+// exact solve loses no more than Gauss-Seidel at Jolt's defaults; and the
+// corrected path is closer to the converged solution (cartpole).
 //
 // The drift is |E(t) - E(0)| at the end of each step, E kinetic plus
 // gravitational (tools::MechanicalEnergy, double sums of float states); for
@@ -142,6 +143,59 @@ TEST(ExactSolveEnergyTest, TheHeavyChainsGainNoEnergyWithTheCorrection) {
     EXPECT_LE(run.largest_gain, 1e-3 * run.largest_kinetic) << id;
     EXPECT_LE(run.largest_joint_error, 1e-3f) << id;
   }
+}
+
+// Energy is not the only gain: the velocity the correction keeps is the one
+// the path needs, so the motion follows the converged solution more closely.
+// cartpole released from its start (the pole 0.1 rad off upright, no cart
+// force) against the exact solve at 256 substeps with 10 Newton steps
+// (converged: with and without the correction it agrees to 5e-3 m over 2 s):
+// measured RMS of the largest body distance over 2 s, 0.014 m with the
+// correction and 0.18 m without, whose pole falls behind as it loses speed.
+TEST(ExactSolveEnergyTest, TheCorrectionFollowsTheConvergedSolutionMoreClosely) {
+  const Scene scene = MakeReferenceScene("cartpole");
+  const auto trajectory = [&](bool curvature, int substeps, int newton_steps) {
+    Batch batch(scene, 1, BatchOptions{1});
+    StepSettings settings;
+    settings.solver = JointSolver::kExact;
+    settings.substeps = substeps;
+    settings.position_iterations = newton_steps;
+    settings.exact_curvature_velocity = curvature;
+    std::vector<float> state(batch.body_count() * kStateFloatsPerBody);
+    std::vector<float> positions;
+    for (int step = 0; step < 120; ++step) {
+      batch.Step(settings);
+      batch.GetState(state);
+      for (std::size_t b = 0; b < batch.body_count(); ++b) {
+        for (int i = 0; i < 3; ++i) positions.push_back(state[b * kStateFloatsPerBody + i]);
+      }
+    }
+    return positions;
+  };
+  const std::vector<float> converged = trajectory(false, 256, 10);
+  const auto rms_error = [&](const std::vector<float>& run) {
+    double sum = 0;
+    const std::size_t per_step = run.size() / 120;
+    for (std::size_t step = 0; step < 120; ++step) {
+      double largest = 0;
+      for (std::size_t b = 0; b < per_step / 3; ++b) {
+        double squared = 0;
+        for (int i = 0; i < 3; ++i) {
+          const std::size_t k = step * per_step + b * 3 + std::size_t(i);
+          squared += (double(run[k]) - converged[k]) * (double(run[k]) - converged[k]);
+        }
+        largest = std::max(largest, squared);
+      }
+      sum += largest;
+    }
+    return std::sqrt(sum / 120);
+  };
+  const double with = rms_error(trajectory(true, 1, 4));
+  const double without = rms_error(trajectory(false, 1, 4));
+  std::printf("cartpole, 2 s against 256 substeps: RMS %.4f m with the correction, %.4f m "
+              "without\n",
+              with, without);
+  EXPECT_LT(with, 0.25 * without);
 }
 
 }  // namespace
