@@ -88,12 +88,11 @@ enum class JointSolver : std::uint8_t {
   // equalities, the velocities take the normal component the joints'
   // curvature needs over the step (exact_curvature_velocity), and Newton
   // steps of the same system project the positions until every joint of
-  // the world is within
-  // exact_tolerance, at most position_iterations steps, no body turning
-  // more than kExactMaxNewtonTurn in one step. Refused by name: two
-  // constraints with row groups between the same two bodies, and a
-  // constraint with row groups that joins no dynamic body with all six
-  // degrees of freedom (docs/stepping.md).
+  // the world is within exact_tolerance, at most position_iterations
+  // steps, no body turning more than kExactMaxNewtonTurn in one step.
+  // Refused by name: two constraints with row groups between the same two
+  // bodies, and a constraint with row groups that joins no dynamic body
+  // with all six degrees of freedom (docs/stepping.md).
   kExact,
 };
 const char* JointSolverName(JointSolver solver);  // "gauss_seidel", "exact"
@@ -168,7 +167,7 @@ struct StepSettings {
   // kExactCurvatureTransverseLimit). Without it the next velocity solve
   // removes that component, which loses energy at first order in dt:
   // chain16 released from horizontal loses 1.15 % of M g L in its first
-  // second, 0.41 % with it (docs/stepping.md). false: the positions'
+  // second, 0.47 % with it (docs/stepping.md). false: the positions'
   // Newton projection alone.
   bool exact_curvature_velocity = true;
   // Contacts (Jolt's PhysicsSettings, docs/contacts.md): shapes closer than
