@@ -320,31 +320,35 @@ HWY_INLINE bool CurvatureApplies(const StepPlan& plan, bool curvature) {
 // linearly to 0 at the limit, so that a world's step changes continuously as
 // its pulls grow. G = dt * sum over the body's point groups of
 // max(0, s lambda . r) (E - r^ r^T), with this step's impulses and the
-// velocity solve's lever arms; tr((E - r^ r^T) I^-1) = tr(I^-1) -
-// r^T I^-1 r / |r|^2. NaN pulls weigh 0.
+// velocity solve's lever arms, summed in scratch.stiffness as Inertia sums
+// the velocity solve's (which is done with it); tr(G I^-1) is the sum of
+// their entries' products, both symmetric. NaN pulls weigh 0.
 inline void CurvatureWeights(const StepPlan& plan, std::byte* block, ExactScratch& scratch,
                              float dt) {
   for (std::size_t b = 0; b < plan.bodies.size(); ++b) {
-    ForEachChunk([&](std::size_t offset) { Store(Zero(), scratch.transverse_ratio[b], offset); });
+    if (plan.bodies[b].motion != MotionType::kDynamic) continue;
+    ForEachChunk(
+        [&](std::size_t offset) { StoreSym33(ZeroSym33(), scratch.stiffness[b], offset); });
   }
   const LaneVec dt_lanes = Splat(dt);
-  ForEachPull(plan, block, [&](std::size_t b, const BodyLanes& body, const Vec3& r,
-                               LaneVec pull, std::size_t offset) {
-    const Sym33 inverse = BodyInverseInertia(body, offset);
-    LaneMask nonzero;
-    const LaneVec along =
-        hn::Mul(Dot(r, Multiply(inverse, r)), ReciprocalOrZero(LengthSquared(r), nonzero));
-    const LaneVec trace = hn::Add(hn::Add(inverse.xx, inverse.yy), inverse.zz);
-    const LaneVec ratio = hn::Mul(hn::Mul(dt_lanes, hn::Max(pull, Zero())), hn::Sub(trace, along));
-    Store(hn::Add(Load(scratch.transverse_ratio[b], offset), ratio), scratch.transverse_ratio[b],
-          offset);
+  ForEachPull(plan, block, [&](std::size_t b, const BodyLanes&, const Vec3& r, LaneVec pull,
+                               std::size_t offset) {
+    Sym33 g = LoadSym33(scratch.stiffness[b], offset);
+    AddTransverseStiffness(hn::Mul(dt_lanes, hn::Max(pull, Zero())), r, g);
+    StoreSym33(g, scratch.stiffness[b], offset);
   });
   const LaneVec fade = Splat(2.0f / kExactCurvatureTransverseLimit);
   ForEachChunk([&](std::size_t offset) {
     LaneVec largest = Zero();
     for (std::size_t b = 0; b < plan.bodies.size(); ++b) {
       if (plan.bodies[b].motion != MotionType::kDynamic) continue;
-      largest = hn::Max(largest, Load(scratch.transverse_ratio[b], offset));
+      const Sym33 g = LoadSym33(scratch.stiffness[b], offset);
+      const Sym33 i = BodyInverseInertia(BodyAt(plan, block, b), offset);
+      const LaneVec diagonal =
+          hn::MulAdd(g.zz, i.zz, hn::MulAdd(g.yy, i.yy, hn::Mul(g.xx, i.xx)));
+      const LaneVec off_diagonal =
+          hn::MulAdd(g.yz, i.yz, hn::MulAdd(g.xz, i.xz, hn::Mul(g.xy, i.xy)));
+      largest = hn::Max(largest, hn::MulAdd(Splat(2.0f), off_diagonal, diagonal));
     }
     // 2 - 2 tr / limit, clamped to [0, 1] (a NaN fails the comparison).
     const LaneVec weight =

@@ -68,14 +68,15 @@ struct ExactScratch {
   std::vector<Vec3Lanes> rhs;        // b, then lambda
   std::vector<Vec3Lanes> translation, rotation;  // per body: one Newton step
   std::vector<Sym33Lanes> inverse_inertia;        // per dynamic body, this solve's
-  std::vector<Sym33Lanes> stiffness;              // per dynamic body: G
+  std::vector<Sym33Lanes> stiffness;              // per dynamic body: G (also CurvatureWeights')
   LaneArray moving;                  // position phase: 1 where still correcting
-  LaneArray step_scale;  // position phase: the trust region's factor (times w / dt: CurvatureVelocity)
+  // Position phase: the trust region's factor (CurvatureVelocity: times
+  // w / dt).
+  LaneArray step_scale;
   // The curvature correction (CurvatureVelocity): per world its weight,
   // and per group C at the step's start.
   LaneArray velocity_weight;
   std::vector<Vec3Lanes> start_error;
-  std::vector<LaneArray> transverse_ratio;  // per body: tr(G I^-1) of this step's pulls
 
   void Fit(const StepPlan& step_plan) {
     const ExactSolvePlan& plan = step_plan.exact;
@@ -83,7 +84,6 @@ struct ExactScratch {
     rotation.resize(step_plan.bodies.size());
     inverse_inertia.resize(step_plan.bodies.size());
     stiffness.resize(step_plan.bodies.size());
-    transverse_ratio.resize(step_plan.bodies.size());
     diagonal.resize(plan.group_count());
     blocks.resize(plan.blocks.size());
     rhs.resize(plan.group_count());

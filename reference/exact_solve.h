@@ -32,7 +32,6 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
-#include <cmath>
 #include <cstddef>
 #include <functional>
 #include <vector>
@@ -114,15 +113,11 @@ class ExactJointSolve {
   void CurvatureVelocity(T dt) {
     const Geometry& g = velocity_geometry_;
     if (g.groups.empty()) return;
-    std::vector<T> ratio(bodies_.size(), T(0));
-    ForEachPull(g.groups, [&](std::size_t body, const Vec3<T>& r, T pull) {
-      const Mat33<T> inverse = bodies_[body].InverseInertia();
-      const T along = r.squaredNorm() > T(0) ? r.dot(inverse * r) / r.squaredNorm() : T(0);
-      ratio[body] += dt * std::max(T(0), pull) * (inverse.trace() - along);
-    });
+    const std::vector<Mat33<T>> stiffness = GeometricStiffness(g.groups, dt);
     T hardest = T(0);
     for (std::size_t body = 0; body < bodies_.size(); ++body) {
-      if (column_[body] != kNotUnknown) hardest = std::max(hardest, ratio[body]);
+      if (column_[body] == kNotUnknown) continue;
+      hardest = std::max(hardest, (stiffness[body] * bodies_[body].InverseInertia()).trace());
     }
     const T weight =
         std::min(T(1), std::max(T(0), T(2) - T(2) * hardest / T(kExactCurvatureTransverseLimit)));
@@ -195,17 +190,24 @@ class ExactJointSolve {
     Matrix j, k;
   };
 
-  // Calls f(body, r, pull) for each dynamic body of each point group: r its
-  // lever arm, pull = s lambda . r with lambda the group's impulse of the
-  // last velocity solve (impulses_) and s = -1 on body 1.
-  template <class F>
-  void ForEachPull(const std::vector<ExactRowGroup<T>>& groups, F&& f) const {
-    for (std::size_t k = 0; k < groups.size() && k < impulses_.size(); ++k) {
+  // Per body, G = factor * sum over its point groups of max(0, s lambda . r)
+  // (E - r^ r^T): r the lever arm, lambda the group's impulse of the last
+  // velocity solve (impulses_, sized by Assemble), s = -1 on body 1.
+  std::vector<Mat33<T>> GeometricStiffness(const std::vector<ExactRowGroup<T>>& groups,
+                                           T factor) const {
+    std::vector<Mat33<T>> g(bodies_.size(), Mat33<T>::Zero());
+    if (!(factor > T(0))) return g;
+    const auto pull = [&](std::size_t body, const Vec3<T>& r, T sign, const Vec3<T>& lambda) {
+      const T w = factor * std::max(T(0), sign * lambda.dot(r));
+      if (w > T(0)) g[body] += w * (Mat33<T>::Identity() - r * r.transpose() / r.squaredNorm());
+    };
+    for (std::size_t k = 0; k < groups.size(); ++k) {
       const ExactRowGroup<T>& group = groups[k];
       if (!group.point) continue;
-      if (column_[group.body1] != kNotUnknown) f(group.body1, group.r1, -impulses_[k].dot(group.r1));
-      if (column_[group.body2] != kNotUnknown) f(group.body2, group.r2, impulses_[k].dot(group.r2));
+      if (column_[group.body1] != kNotUnknown) pull(group.body1, group.r1, T(-1), impulses_[k]);
+      if (column_[group.body2] != kNotUnknown) pull(group.body2, group.r2, T(1), impulses_[k]);
     }
+    return g;
   }
 
   // Each dynamic body's rotation step I~^-1 (J^T lambda)_angular for the
@@ -230,15 +232,7 @@ class ExactJointSolve {
     g.groups = std::move(groups);
     impulses_.resize(g.groups.size(), Vec3<T>::Zero());  // zero before the first solve
     g.inverse_inertia.resize(bodies_.size(), Mat33<T>::Zero());
-    std::vector<Mat33<T>> stiffness_of(bodies_.size(), Mat33<T>::Zero());
-    if (stiffness > T(0)) {
-      ForEachPull(g.groups, [&](std::size_t body, const Vec3<T>& r, T pull) {
-        const T w = stiffness * std::max(T(0), pull);
-        if (w > T(0)) {
-          stiffness_of[body] += w * (Mat33<T>::Identity() - r * r.transpose() / r.squaredNorm());
-        }
-      });
-    }
+    const std::vector<Mat33<T>> stiffness_of = GeometricStiffness(g.groups, stiffness);
     for (std::size_t body = 0; body < bodies_.size(); ++body) {
       if (column_[body] == kNotUnknown) continue;
       const Mat33<T> inverse = bodies_[body].InverseInertia();
