@@ -226,18 +226,18 @@ inline ContactCandidates PlanePairCandidates(const ContactBlock& c,
   const Vec3 normal = plane_is_body1 ? plane.normal : Neg(plane.normal);
   const LaneVec speculative = SpeculativeDistance(c, scalars, normal, offset);
   const LaneVec tolerance = hn::Add(speculative, Splat(kContactManifoldTolerance));
-  PlanePoints points;
-  switch (plan.kind) {
-    case ContactPairKind::kPlaneSphere:
-      points = SpherePoints(plane, shape, other, speculative);
-      break;
-    case ContactPairKind::kPlaneCapsule:
-      points = CapsulePoints(plane, shape, other, speculative, tolerance);
-      break;
-    default:
-      points = BoxPoints(plane, shape, other, speculative, tolerance);
-      break;
-  }
+  // Returned straight into `points`: assigned in a switch, the aggregate was
+  // copied whole (rep movsq on AVX2, Assign in kernels/lane_math-inl.h).
+  const PlanePoints points = [&] {
+    switch (plan.kind) {
+      case ContactPairKind::kPlaneSphere:
+        return SpherePoints(plane, shape, other, speculative);
+      case ContactPairKind::kPlaneCapsule:
+        return CapsulePoints(plane, shape, other, speculative, tolerance);
+      default:
+        return BoxPoints(plane, shape, other, speculative, tolerance);
+    }
+  }();
   ContactCandidates found;
   found.normal = normal;
   for (std::size_t i = 0; i < plan.point_count; ++i) {

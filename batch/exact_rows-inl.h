@@ -69,14 +69,19 @@ HWY_INLINE Mat33 Identity33() {
   return m;
 }
 
-// [r]x, the matrix of r x.
-HWY_INLINE Mat33 CrossMatrix(const Vec3& r) {
-  Mat33 m = ZeroMat33();
-  m.m[0][1] = hn::Neg(r.z), m.m[0][2] = r.y;
-  m.m[1][0] = r.z, m.m[1][2] = hn::Neg(r.x);
-  m.m[2][0] = hn::Neg(r.y), m.m[2][1] = r.x;
-  return m;
+// Entry (i, c) of [r]x, the matrix of r x.
+HWY_INLINE LaneVec CrossEntry(const Vec3& r, int i, int c) {
+  switch (3 * i + c) {
+    case 1: return hn::Neg(r.z);
+    case 2: return r.y;
+    case 3: return r.z;
+    case 5: return hn::Neg(r.x);
+    case 6: return hn::Neg(r.y);
+    case 7: return r.x;
+    default: return Zero();  // the diagonal
+  }
 }
+
 
 HWY_INLINE Mat33 Negated(const Mat33& a) {
   Mat33 m;
@@ -106,17 +111,28 @@ HWY_INLINE PointLanes& PointPart(const ConstraintBlock& c) {
   }
 }
 
-// A point group's side as general rows, from the lever arm r and I^-1 [r]x
-// its part caches: linear s E, angular -s [r]x, I^-1 (angular)^T = s I^-1 [r]x
-// (s = -1 on body 1).
-HWY_INLINE void PointSide(const PointLanes& part, int side, std::size_t offset, Mat33& linear,
-                          Mat33& angular, Mat33& inv_i_angular) {
-  const Vec3 r = LoadVec3(side == 1 ? part.r2 : part.r1, offset);
-  const Mat33 a = LoadMat33(side == 1 ? part.inv_i2_r2_cross : part.inv_i1_r1_cross, offset);
-  linear = side == 1 ? Identity33() : Negated(Identity33());
-  angular = side == 1 ? Negated(CrossMatrix(r)) : CrossMatrix(r);
-  inv_i_angular = side == 1 ? a : Negated(a);
-}
+// A point group's rows on one side as general rows, entry by entry, from the
+// lever arm r and I^-1 [r]x its part caches: linear s E, angular -s [r]x,
+// I^-1 (angular)^T = s I^-1 [r]x (s = -1 on body 1; the sign flips the sign
+// bit, as Negated does). Read where a coupling uses them (AddCoupling), so no
+// 3x3 of them is held in registers (AVX2 has 16: held whole, they spilled).
+struct PointRows {
+  PointRows(const PointLanes& part, bool body2, std::size_t offset)
+      : r(LoadVec3(body2 ? part.r2 : part.r1, offset)),
+        inv_i_r_cross(body2 ? part.inv_i2_r2_cross : part.inv_i1_r1_cross),
+        flip(body2 ? Zero() : Splat(-0.0f)),
+        offset(offset) {}
+  LaneVec Linear(int i, int c) const { return hn::Xor(i == c ? Splat(1.0f) : Zero(), flip); }
+  LaneVec Angular(int i, int c) const { return hn::Xor(hn::Neg(CrossEntry(r, i, c)), flip); }
+  LaneVec InvIAngular(int c, int j) const {
+    return hn::Xor(Load(inv_i_r_cross.m[c][j], offset), flip);
+  }
+
+  Vec3 r;
+  const Mat33Lanes& inv_i_r_cross;
+  LaneVec flip;  // -0 on body 1: x ^ -0 = -x
+  std::size_t offset;
+};
 
 // The helper hinge's unwrapped angle of `body`'s turn (AsSeenBy).
 HWY_INLINE LaneVec HelperAngle(const StepPlan& plan, const ConstraintBlock& c,
@@ -132,7 +148,10 @@ HWY_INLINE LaneVec HelperAngle(const StepPlan& plan, const ConstraintBlock& c,
 HWY_INLINE GroupRows RowsOfChunk(const StepPlan& plan, const ConstraintBlock& c, ExactRows kind,
                                  bool with_error, std::size_t offset) {
   GroupRows rows;
-  for (int side = 0; side < 2; ++side) rows.linear[side] = rows.angular[side] = ZeroMat33();
+  for (int side = 0; side < 2; ++side) {
+    Assign(rows.linear[side], ZeroMat33());
+    Assign(rows.angular[side], ZeroMat33());
+  }
   rows.error = ZeroVec3();
   const Quat q1 = LoadQuat(c.bodies.body1->rotation, offset);
   const Quat q2 = LoadQuat(c.bodies.body2->rotation, offset);
@@ -155,8 +174,8 @@ HWY_INLINE GroupRows RowsOfChunk(const StepPlan& plan, const ConstraintBlock& c,
     }
     case ExactRows::kRotation: {
       const bool fixed = c.plan.type == ConstraintType::kFixed;
-      rows.angular[0] = Negated(Identity33());
-      rows.angular[1] = Identity33();
+      Assign(rows.angular[0], Negated(Identity33()));
+      Assign(rows.angular[1], Identity33());
       if (with_error) {
         const QuatLanes& r0_inverse = fixed ? c.Main<FixedConstraintLanes>().inv_initial_orientation
                                             : c.Main<SliderConstraintLanes>().inv_initial_orientation;

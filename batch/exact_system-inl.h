@@ -148,7 +148,7 @@ HWY_INLINE Sym33 SubTransposeTimes(const Sym33& a, const Mat33& b, const Mat33& 
 // part caches them (zero I^-1 [r]x for a body that is not dynamic).
 HWY_INLINE void Side(const PointLanes& part, bool body2, std::size_t offset, Vec3& r, Mat33& a) {
   r = LoadVec3(body2 ? part.r2 : part.r1, offset);
-  a = LoadMat33(body2 ? part.inv_i2_r2_cross : part.inv_i1_r1_cross, offset);
+  Assign(a, LoadMat33(body2 ? part.inv_i2_r2_cross : part.inv_i1_r1_cross, offset));
 }
 
 HWY_INLINE Sym33 UpperTriangle(const Mat33& m) {
@@ -314,50 +314,78 @@ HWY_INLINE Vec3 LinearInverseMass(const BodyLanes& body, std::size_t offset) {
   return LockTranslation(body, Vec3{inv_mass, inv_mass, inv_mass}, offset);
 }
 
-// m^-1 L_a L_b^T + A_a (I^-1 A_b^T): how the rows a and b couple through one
-// body (inv_i_angular_b holds I^-1 A_b^T; m^-1 per axis for a body with
-// locked translation axes).
-HWY_INLINE Mat33 Coupling(const BodyLanes& body, std::size_t offset, const Mat33& linear_a,
-                          const Mat33& angular_a, const Mat33& linear_b,
-                          const Mat33& inv_i_angular_b) {
-  Mat33 k;
+// A group's rows on one side as the exact scratch keeps them (GroupJacobians,
+// and I^-1 A^T from AssembleK's diagonal pass), read entry by entry where
+// used, as PointRows reads a point group's.
+struct StoredRows {
+  LaneVec Linear(int i, int c) const { return Load(jacobian.linear[side].m[i][c], offset); }
+  LaneVec Angular(int i, int c) const { return Load(jacobian.angular[side].m[i][c], offset); }
+  LaneVec InvIAngular(int c, int j) const {
+    return Load(jacobian.inv_i_angular[side].m[c][j], offset);
+  }
+
+  const ExactScratch::GroupJacobian& jacobian;
+  int side;
+  std::size_t offset;
+};
+
+template <class Rows>
+HWY_INLINE Vec3 LinearRow(const Rows& rows, int i) {
+  return {rows.Linear(i, 0), rows.Linear(i, 1), rows.Linear(i, 2)};
+}
+template <class Rows>
+HWY_INLINE Vec3 AngularRow(const Rows& rows, int i) {
+  return {rows.Angular(i, 0), rows.Angular(i, 1), rows.Angular(i, 2)};
+}
+template <class Rows>
+HWY_INLINE Vec3 InvIAngularColumn(const Rows& rows, int j) {
+  return {rows.InvIAngular(0, j), rows.InvIAngular(1, j), rows.InvIAngular(2, j)};
+}
+
+// m^-1 L_a L_b^T + A_a (I^-1 A_b^T): how the rows a and b (StoredRows or
+// PointRows) couple through one body (m^-1 per axis for a body with locked
+// translation axes). Row by row of a, each entry of b read where it is used,
+// each entry of the product handed to add(i, j, entry) as it is formed, so
+// no 3x3 is held whole.
+template <class RowsA, class RowsB, class Add>
+HWY_INLINE void AddCoupling(const BodyLanes& body, std::size_t offset, const RowsA& a,
+                            const RowsB& b, Add&& add) {
   if (!DofRestricted(body)) {  // the scene's choice: the same branch in every chunk
     const LaneVec inv_mass = Load(body.inv_mass, offset);
     for (int i = 0; i < 3; ++i) {
+      const Vec3 linear_a = LinearRow(a, i), angular_a = AngularRow(a, i);
       for (int j = 0; j < 3; ++j) {
-        k.m[i][j] = hn::MulAdd(inv_mass, Dot(Row(linear_a, i), Row(linear_b, j)),
-                               Dot(Row(angular_a, i), Column(inv_i_angular_b, j)));
+        add(i, j, hn::MulAdd(inv_mass, Dot(linear_a, LinearRow(b, j)),
+                             Dot(angular_a, InvIAngularColumn(b, j))));
       }
     }
-    return k;
+    return;
   }
   const Vec3 free = LinearInverseMass(body, offset);
   for (int i = 0; i < 3; ++i) {
-    const Vec3 a = Row(linear_a, i);
-    const Vec3 weighted{hn::Mul(a.x, free.x), hn::Mul(a.y, free.y), hn::Mul(a.z, free.z)};
+    const Vec3 linear_a = LinearRow(a, i), angular_a = AngularRow(a, i);
+    const Vec3 weighted{hn::Mul(linear_a.x, free.x), hn::Mul(linear_a.y, free.y),
+                        hn::Mul(linear_a.z, free.z)};
     for (int j = 0; j < 3; ++j) {
-      k.m[i][j] = hn::Add(Dot(weighted, Row(linear_b, j)),
-                          Dot(Row(angular_a, i), Column(inv_i_angular_b, j)));
+      add(i, j, hn::Add(Dot(weighted, LinearRow(b, j)), Dot(angular_a, InvIAngularColumn(b, j))));
     }
   }
-  return k;
 }
 
-// One side of the group at `position` as general rows (LeverArms, and
-// AssembleK's diagonal pass, first).
-HWY_INLINE void GroupSide(const StepPlan& plan, std::byte* block, const ExactScratch& scratch,
-                          std::size_t position, bool body2, std::size_t offset, Mat33& linear,
-                          Mat33& angular, Mat33& inv_i_angular) {
-  const int side = body2 ? 1 : 0;
+// Calls f(rows) with rows(offset) giving the rows of the group at `position`
+// on one side: PointRows for a point group (LeverArms first), StoredRows for
+// the others (AssembleK's diagonal pass first).
+template <class F>
+HWY_INLINE void WithGroupRows(const StepPlan& plan, std::byte* block, const ExactScratch& scratch,
+                              std::size_t position, bool body2, F&& f) {
   if (IsPoint(plan.exact, position)) {
-    PointSide(PointPart(GroupAt(plan, block, position)), side, offset, linear, angular,
-              inv_i_angular);
+    const PointLanes& part = PointPart(GroupAt(plan, block, position));
+    f([&part, body2](std::size_t offset) { return PointRows(part, body2, offset); });
     return;
   }
   const ExactScratch::GroupJacobian& jacobian = scratch.jacobians[position];
-  linear = LoadMat33(jacobian.linear[side], offset);
-  angular = LoadMat33(jacobian.angular[side], offset);
-  inv_i_angular = LoadMat33(jacobian.inv_i_angular[side], offset);
+  const int side = body2 ? 1 : 0;
+  f([&jacobian, side](std::size_t offset) { return StoredRows{jacobian, side, offset}; });
 }
 
 // K from the lever arms, the other groups' rows (GroupJacobians) and the
@@ -375,23 +403,21 @@ inline void AssembleK(const StepPlan& plan, std::byte* block, ExactScratch& scra
         Mat33 k = ZeroMat33();
         for (int side = 0; side < 2; ++side) {
           const std::size_t body = side == 1 ? c.plan.body2 : c.plan.body1;
-          Mat33 inv_i_angular = ZeroMat33();
-          if ((side == 1 ? c.bodies.motion2 : c.bodies.motion1) == MotionType::kDynamic) {
-            const Mat33 linear = LoadMat33(jacobian.linear[side], offset);
-            const Mat33 angular = LoadMat33(jacobian.angular[side], offset);
-            const Sym33 inverse_inertia = LoadSym33(scratch.inverse_inertia[body], offset);
-            for (int r = 0; r < 3; ++r) {
-              const Vec3 step = Multiply(inverse_inertia, Row(angular, r));
-              inv_i_angular.m[0][r] = step.x, inv_i_angular.m[1][r] = step.y;
-              inv_i_angular.m[2][r] = step.z;
-            }
-            const Mat33 term = Coupling(BodyAt(plan, block, body), offset, linear, angular,
-                                        linear, inv_i_angular);
-            for (int i = 0; i < 3; ++i) {
-              for (int j = 0; j < 3; ++j) k.m[i][j] = hn::Add(k.m[i][j], term.m[i][j]);
-            }
+          Mat33Lanes& inv_i_angular = jacobian.inv_i_angular[side];
+          if ((side == 1 ? c.bodies.motion2 : c.bodies.motion1) != MotionType::kDynamic) {
+            StoreMat33(ZeroMat33(), inv_i_angular, offset);
+            continue;
           }
-          StoreMat33(inv_i_angular, jacobian.inv_i_angular[side], offset);
+          const StoredRows rows{jacobian, side, offset};
+          const Sym33 inverse_inertia = LoadSym33(scratch.inverse_inertia[body], offset);
+          for (int r = 0; r < 3; ++r) {
+            const Vec3 step = Multiply(inverse_inertia, AngularRow(rows, r));
+            Store(step.x, inv_i_angular.m[0][r], offset);
+            Store(step.y, inv_i_angular.m[1][r], offset);
+            Store(step.z, inv_i_angular.m[2][r], offset);
+          }
+          AddCoupling(BodyAt(plan, block, body), offset, rows, rows,
+                      [&](int i, int j, LaneVec term) { k.m[i][j] = hn::Add(k.m[i][j], term); });
         }
         for (int r = rows; r < 3; ++r) k.m[r][r] = Splat(1.0f);  // padding
         StoreSym33(UpperTriangle(k), scratch.diagonal[p], offset);
@@ -432,20 +458,17 @@ inline void AssembleK(const StepPlan& plan, std::byte* block, ExactScratch& scra
     const BodyLanes& body = BodyAt(plan, block, shared.body);
     Mat33Lanes& out = scratch.blocks[shared.block];
     if (!IsPoint(exact, shared.first) || !IsPoint(exact, shared.second)) {
-      ForEachChunk([&](std::size_t offset) {
-        Mat33 linear_first, angular_first, unused, linear_second, angular_second,
-            inv_i_angular_second;
-        GroupSide(plan, block, scratch, shared.first, shared.first_is_body2, offset,
-                  linear_first, angular_first, unused);
-        GroupSide(plan, block, scratch, shared.second, shared.second_is_body2, offset,
-                  linear_second, angular_second, inv_i_angular_second);
-        const Mat33 term = Coupling(body, offset, linear_first, angular_first, linear_second,
-                                    inv_i_angular_second);
-        Mat33 coupling = LoadMat33(out, offset);
-        for (int i = 0; i < 3; ++i) {
-          for (int j = 0; j < 3; ++j) coupling.m[i][j] = hn::Add(coupling.m[i][j], term.m[i][j]);
-        }
-        StoreMat33(coupling, out, offset);
+      const auto add_coupling = [&](auto first, auto second) {
+        ForEachChunk([&](std::size_t offset) {
+          AddCoupling(body, offset, first(offset), second(offset),
+                      [&](int i, int j, LaneVec term) {
+                        Store(hn::Add(Load(out.m[i][j], offset), term), out.m[i][j], offset);
+                      });
+        });
+      };
+      WithGroupRows(plan, block, scratch, shared.first, shared.first_is_body2, [&](auto first) {
+        WithGroupRows(plan, block, scratch, shared.second, shared.second_is_body2,
+                      [&](auto second) { add_coupling(first, second); });
       });
       continue;
     }

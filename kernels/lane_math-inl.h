@@ -282,6 +282,18 @@ struct Mat33 {
 
 HWY_INLINE Vec3 Column(const Mat33& m, int j) { return {m.m[0][j], m.m[1][j], m.m[2][j]}; }
 
+// out = m, entry by entry. Where a Mat33 is assigned to an existing object
+// (an out parameter, a member, one of two values chosen at run time) the
+// compiler may keep the aggregate in memory and copy it whole: 288 bytes on
+// AVX2's 32-byte vectors became `rep movsq`, too long for its move-by-pieces
+// limit, and those copies took 40 % of the exact solve's K assembly there.
+// Entry by entry, the values stay in registers or plain vector moves.
+HWY_INLINE void Assign(Mat33& out, const Mat33& m) {
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) out.m[i][j] = m.m[i][j];
+  }
+}
+
 // Symmetric 3x3 (inverse inertia, effective mass): six distinct entries.
 struct Sym33 {
   LaneVec xx, xy, xz, yy, yz, zz;
