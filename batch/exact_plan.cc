@@ -21,6 +21,15 @@ int ExactRowCount(ExactRows rows) {
   return 0;
 }
 
+bool HasLinearRows(ExactRows rows, int side) {
+  switch (rows) {
+    case ExactRows::kPoint: case ExactRows::kSliderAxes: return true;
+    case ExactRows::kHingeRotation: case ExactRows::kRotation: case ExactRows::kGear: return false;
+    case ExactRows::kRackAndPinion: return side == 1;
+  }
+  return true;
+}
+
 std::size_t ExactSolvePlan::fill_blocks() const {
   std::set<std::size_t> coupled;
   for (const SharedBody& shared : shared_bodies) coupled.insert(shared.block);

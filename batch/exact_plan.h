@@ -43,6 +43,11 @@ enum class ExactRows : std::uint8_t {
   kRackAndPinion,  // 1 row:  theta1 - r d2 = 0
 };
 int ExactRowCount(ExactRows rows);
+// Whether the group's rows on body 1 (side 0) or body 2 (side 1) have a
+// linear part: the rotation groups' and a gear's rows turn the bodies only,
+// a rack and pinion's move only the rack (body 2). Where either of two rows
+// has none, their coupling is the angular term alone (AddCoupling).
+bool HasLinearRows(ExactRows rows, int side);
 
 struct ExactSolvePlan {
   // Why the scene cannot be solved exactly (names the constraint or body);

@@ -127,6 +127,7 @@ struct PointRows {
   LaneVec InvIAngular(int c, int j) const {
     return hn::Xor(Load(inv_i_r_cross.m[c][j], offset), flip);
   }
+  bool HasLinear() const { return true; }
 
   Vec3 r;
   const Mat33Lanes& inv_i_r_cross;

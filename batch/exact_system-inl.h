@@ -323,10 +323,12 @@ struct StoredRows {
   LaneVec InvIAngular(int c, int j) const {
     return Load(jacobian.inv_i_angular[side].m[c][j], offset);
   }
+  bool HasLinear() const { return linear; }
 
   const ExactScratch::GroupJacobian& jacobian;
   int side;
   std::size_t offset;
+  bool linear;  // HasLinearRows: false where the linear rows are all zero
 };
 
 template <class Rows>
@@ -346,10 +348,18 @@ HWY_INLINE Vec3 InvIAngularColumn(const Rows& rows, int j) {
 // PointRows) couple through one body (m^-1 per axis for a body with locked
 // translation axes). Row by row of a, each entry of b read where it is used,
 // each entry of the product handed to add(i, j, entry) as it is formed, so
-// no 3x3 is held whole.
+// no 3x3 is held whole. Where a or b has no linear rows (HasLinearRows) the
+// first term is zero and is not formed.
 template <class RowsA, class RowsB, class Add>
 HWY_INLINE void AddCoupling(const BodyLanes& body, std::size_t offset, const RowsA& a,
                             const RowsB& b, Add&& add) {
+  if (!a.HasLinear() || !b.HasLinear()) {  // the plan's choice: the same in every chunk
+    for (int i = 0; i < 3; ++i) {
+      const Vec3 angular_a = AngularRow(a, i);
+      for (int j = 0; j < 3; ++j) add(i, j, Dot(angular_a, InvIAngularColumn(b, j)));
+    }
+    return;
+  }
   if (!DofRestricted(body)) {  // the scene's choice: the same branch in every chunk
     const LaneVec inv_mass = Load(body.inv_mass, offset);
     for (int i = 0; i < 3; ++i) {
@@ -385,7 +395,10 @@ HWY_INLINE void WithGroupRows(const StepPlan& plan, std::byte* block, const Exac
   }
   const ExactScratch::GroupJacobian& jacobian = scratch.jacobians[position];
   const int side = body2 ? 1 : 0;
-  f([&jacobian, side](std::size_t offset) { return StoredRows{jacobian, side, offset}; });
+  const bool linear = HasLinearRows(plan.exact.order[position].rows, side);
+  f([&jacobian, side, linear](std::size_t offset) {
+    return StoredRows{jacobian, side, offset, linear};
+  });
 }
 
 // K from the lever arms, the other groups' rows (GroupJacobians) and the
@@ -398,6 +411,8 @@ inline void AssembleK(const StepPlan& plan, std::byte* block, ExactScratch& scra
     const ConstraintBlock c = GroupAt(plan, block, p);
     if (!IsPoint(exact, p)) {
       const int rows = ExactRowCount(exact.order[p].rows);
+      const bool linear[2] = {HasLinearRows(exact.order[p].rows, 0),
+                              HasLinearRows(exact.order[p].rows, 1)};
       ExactScratch::GroupJacobian& jacobian = scratch.jacobians[p];
       ForEachChunk([&](std::size_t offset) {
         Mat33 k = ZeroMat33();
@@ -408,7 +423,7 @@ inline void AssembleK(const StepPlan& plan, std::byte* block, ExactScratch& scra
             StoreMat33(ZeroMat33(), inv_i_angular, offset);
             continue;
           }
-          const StoredRows rows{jacobian, side, offset};
+          const StoredRows rows{jacobian, side, offset, linear[side]};
           const Sym33 inverse_inertia = LoadSym33(scratch.inverse_inertia[body], offset);
           for (int r = 0; r < 3; ++r) {
             const Vec3 step = Multiply(inverse_inertia, AngularRow(rows, r));
