@@ -128,6 +128,7 @@ struct PointRows {
     return hn::Xor(Load(inv_i_r_cross.m[c][j], offset), flip);
   }
   bool HasLinear() const { return true; }
+  int Rows() const { return 3; }
 
   Vec3 r;
   const Mat33Lanes& inv_i_r_cross;

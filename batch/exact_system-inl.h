@@ -324,11 +324,13 @@ struct StoredRows {
     return Load(jacobian.inv_i_angular[side].m[c][j], offset);
   }
   bool HasLinear() const { return linear; }
+  int Rows() const { return rows; }
 
   const ExactScratch::GroupJacobian& jacobian;
   int side;
   std::size_t offset;
   bool linear;  // HasLinearRows: false where the linear rows are all zero
+  int rows;     // ExactRowCount: the rows below are padding, all zero
 };
 
 template <class Rows>
@@ -349,22 +351,30 @@ HWY_INLINE Vec3 InvIAngularColumn(const Rows& rows, int j) {
 // translation axes). Row by row of a, each entry of b read where it is used,
 // each entry of the product handed to add(i, j, entry) as it is formed, so
 // no 3x3 is held whole. Where a or b has no linear rows (HasLinearRows) the
-// first term is zero and is not formed.
+// first term is zero and is not formed. Entries of padding rows (Rows) are
+// not formed at all: they would be zeros added to K's +0 start, which stays
+// +0 (+0 + -0 = +0), so the caller's zeros are the same bits.
 template <class RowsA, class RowsB, class Add>
 HWY_INLINE void AddCoupling(const BodyLanes& body, std::size_t offset, const RowsA& a,
                             const RowsB& b, Add&& add) {
+  const int rows_a = a.Rows(), rows_b = b.Rows();
   if (!a.HasLinear() || !b.HasLinear()) {  // the plan's choice: the same in every chunk
     for (int i = 0; i < 3; ++i) {
+      if (i >= rows_a) break;
       const Vec3 angular_a = AngularRow(a, i);
-      for (int j = 0; j < 3; ++j) add(i, j, Dot(angular_a, InvIAngularColumn(b, j)));
+      for (int j = 0; j < 3; ++j) {
+        if (j < rows_b) add(i, j, Dot(angular_a, InvIAngularColumn(b, j)));
+      }
     }
     return;
   }
   if (!DofRestricted(body)) {  // the scene's choice: the same branch in every chunk
     const LaneVec inv_mass = Load(body.inv_mass, offset);
     for (int i = 0; i < 3; ++i) {
+      if (i >= rows_a) break;
       const Vec3 linear_a = LinearRow(a, i), angular_a = AngularRow(a, i);
       for (int j = 0; j < 3; ++j) {
+        if (j >= rows_b) break;
         add(i, j, hn::MulAdd(inv_mass, Dot(linear_a, LinearRow(b, j)),
                              Dot(angular_a, InvIAngularColumn(b, j))));
       }
@@ -373,10 +383,12 @@ HWY_INLINE void AddCoupling(const BodyLanes& body, std::size_t offset, const Row
   }
   const Vec3 free = LinearInverseMass(body, offset);
   for (int i = 0; i < 3; ++i) {
+    if (i >= rows_a) break;
     const Vec3 linear_a = LinearRow(a, i), angular_a = AngularRow(a, i);
     const Vec3 weighted{hn::Mul(linear_a.x, free.x), hn::Mul(linear_a.y, free.y),
                         hn::Mul(linear_a.z, free.z)};
     for (int j = 0; j < 3; ++j) {
+      if (j >= rows_b) break;
       add(i, j, hn::Add(Dot(weighted, LinearRow(b, j)), Dot(angular_a, InvIAngularColumn(b, j))));
     }
   }
@@ -395,9 +407,11 @@ HWY_INLINE void WithGroupRows(const StepPlan& plan, std::byte* block, const Exac
   }
   const ExactScratch::GroupJacobian& jacobian = scratch.jacobians[position];
   const int side = body2 ? 1 : 0;
-  const bool linear = HasLinearRows(plan.exact.order[position].rows, side);
-  f([&jacobian, side, linear](std::size_t offset) {
-    return StoredRows{jacobian, side, offset, linear};
+  const ExactRows kind = plan.exact.order[position].rows;
+  const bool linear = HasLinearRows(kind, side);
+  const int rows = ExactRowCount(kind);
+  f([&jacobian, side, linear, rows](std::size_t offset) {
+    return StoredRows{jacobian, side, offset, linear, rows};
   });
 }
 
@@ -423,15 +437,15 @@ inline void AssembleK(const StepPlan& plan, std::byte* block, ExactScratch& scra
             StoreMat33(ZeroMat33(), inv_i_angular, offset);
             continue;
           }
-          const StoredRows rows{jacobian, side, offset, linear[side]};
+          const StoredRows group_rows{jacobian, side, offset, linear[side], rows};
           const Sym33 inverse_inertia = LoadSym33(scratch.inverse_inertia[body], offset);
           for (int r = 0; r < 3; ++r) {
-            const Vec3 step = Multiply(inverse_inertia, AngularRow(rows, r));
+            const Vec3 step = Multiply(inverse_inertia, AngularRow(group_rows, r));
             Store(step.x, inv_i_angular.m[0][r], offset);
             Store(step.y, inv_i_angular.m[1][r], offset);
             Store(step.z, inv_i_angular.m[2][r], offset);
           }
-          AddCoupling(BodyAt(plan, block, body), offset, rows, rows,
+          AddCoupling(BodyAt(plan, block, body), offset, group_rows, group_rows,
                       [&](int i, int j, LaneVec term) { k.m[i][j] = hn::Add(k.m[i][j], term); });
         }
         for (int r = rows; r < 3; ++r) k.m[r][r] = Splat(1.0f);  // padding
