@@ -82,7 +82,6 @@ HWY_INLINE LaneVec CrossEntry(const Vec3& r, int i, int c) {
   }
 }
 
-
 HWY_INLINE Mat33 Negated(const Mat33& a) {
   Mat33 m;
   for (int i = 0; i < 3; ++i) {

@@ -351,9 +351,10 @@ HWY_INLINE Vec3 InvIAngularColumn(const Rows& rows, int j) {
 // translation axes). Row by row of a, each entry of b read where it is used,
 // each entry of the product handed to add(i, j, entry) as it is formed, so
 // no 3x3 is held whole. Where a or b has no linear rows (HasLinearRows) the
-// first term is zero and is not formed. Entries of padding rows (Rows) are
-// not formed at all: they would be zeros added to K's +0 start, which stays
-// +0 (+0 + -0 = +0), so the caller's zeros are the same bits.
+// first term is a zero and is not formed; entries of padding rows (Rows) are
+// not formed at all. Either way the bits are the same: x + 0 = x for x != 0,
+// and every entry is summed into K from +0, where a zero of either sign
+// leaves +0.
 template <class RowsA, class RowsB, class Add>
 HWY_INLINE void AddCoupling(const BodyLanes& body, std::size_t offset, const RowsA& a,
                             const RowsB& b, Add&& add) {
@@ -363,7 +364,8 @@ HWY_INLINE void AddCoupling(const BodyLanes& body, std::size_t offset, const Row
       if (i >= rows_a) break;
       const Vec3 angular_a = AngularRow(a, i);
       for (int j = 0; j < 3; ++j) {
-        if (j < rows_b) add(i, j, Dot(angular_a, InvIAngularColumn(b, j)));
+        if (j >= rows_b) break;
+        add(i, j, Dot(angular_a, InvIAngularColumn(b, j)));
       }
     }
     return;
