@@ -61,8 +61,6 @@ HWY_INLINE void SetRow(Mat33& m, int row, const Vec3& v) {
   m.m[row][0] = v.x, m.m[row][1] = v.y, m.m[row][2] = v.z;
 }
 
-HWY_INLINE Vec3 Row(const Mat33& m, int row) { return {m.m[row][0], m.m[row][1], m.m[row][2]}; }
-
 HWY_INLINE Mat33 Identity33() {
   Mat33 m = ZeroMat33();
   m.m[0][0] = m.m[1][1] = m.m[2][2] = Splat(1.0f);

@@ -320,23 +320,13 @@ HWY_INLINE bool CurvatureApplies(const StepPlan& plan, bool curvature) {
 // linearly to 0 at the limit, so that a world's step changes continuously as
 // its pulls grow. G = dt * sum over the body's point groups of
 // max(0, s lambda . r) (E - r^ r^T), with this step's impulses and the
-// velocity solve's lever arms, summed in scratch.stiffness as Inertia sums
-// the velocity solve's (which is done with it); tr(G I^-1) is the sum of
-// their entries' products, both symmetric. NaN pulls weigh 0.
+// velocity solve's lever arms, summed in scratch.stiffness by
+// SumGeometricStiffness as Inertia sums the velocity solve's (which is done
+// with it); tr(G I^-1) is the sum of their entries' products, both
+// symmetric. NaN pulls weigh 0.
 inline void CurvatureWeights(const StepPlan& plan, std::byte* block, ExactScratch& scratch,
                              float dt) {
-  for (std::size_t b = 0; b < plan.bodies.size(); ++b) {
-    if (plan.bodies[b].motion != MotionType::kDynamic) continue;
-    ForEachChunk(
-        [&](std::size_t offset) { StoreSym33(ZeroSym33(), scratch.stiffness[b], offset); });
-  }
-  const LaneVec dt_lanes = Splat(dt);
-  ForEachPull(plan, block, [&](std::size_t b, const BodyLanes&, const Vec3& r, LaneVec pull,
-                               std::size_t offset) {
-    Sym33 g = LoadSym33(scratch.stiffness[b], offset);
-    AddTransverseStiffness(hn::Mul(dt_lanes, hn::Max(pull, Zero())), r, g);
-    StoreSym33(g, scratch.stiffness[b], offset);
-  });
+  SumGeometricStiffness(plan, block, scratch, dt);
   const LaneVec fade = Splat(2.0f / kExactCurvatureTransverseLimit);
   ForEachChunk([&](std::size_t offset) {
     LaneVec largest = Zero();

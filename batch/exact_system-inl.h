@@ -261,9 +261,29 @@ HWY_INLINE LaneVec TrustRegionScale(const StepPlan& plan, const ExactScratch& sc
   return hn::IfThenElse(too_far, hn::Div(max_turn, hn::Sqrt(largest_squared)), Splat(1.0f));
 }
 
+// Into scratch.stiffness, per dynamic body: G = factor * sum over its point
+// groups of max(0, s lambda . r) (E - r^ r^T), lambda the group's last
+// velocity impulse and r its lever arm (ForEachPull; LeverArms first).
+inline void SumGeometricStiffness(const StepPlan& plan, std::byte* block, ExactScratch& scratch,
+                                  float factor) {
+  for (std::size_t b = 0; b < plan.bodies.size(); ++b) {
+    if (plan.bodies[b].motion != MotionType::kDynamic) continue;
+    ForEachChunk(
+        [&](std::size_t offset) { StoreSym33(ZeroSym33(), scratch.stiffness[b], offset); });
+  }
+  const LaneVec factor_lanes = Splat(factor);
+  ForEachPull(plan, block, [&](std::size_t b, const BodyLanes&, const Vec3& r, LaneVec pull,
+                               std::size_t offset) {
+    Sym33 g = LoadSym33(scratch.stiffness[b], offset);
+    AddTransverseStiffness(hn::Mul(factor_lanes, hn::Max(pull, Zero())), r, g);
+    StoreSym33(g, scratch.stiffness[b], offset);
+  });
+}
+
 // Each dynamic body's inverse inertia for this solve (LeverArms first): I^-1 at its current
 // rotation, or with `stiffness` > 0 (velocity phase) (I + G)^-1, where G
-// sums over the body's point groups  stiffness * max(0, s lambda . r) (E - r^ r^T)
+// (SumGeometricStiffness) sums over the body's point groups
+// stiffness * max(0, s lambda . r) (E - r^ r^T)
 // with lambda the group's impulse of the last velocity solve and s = -1 on
 // body 1: the geometric stiffness of the joints' pulls (Tournier et al.,
 // "Stable Constrained Dynamics", 2015), taken implicitly. A slender link
@@ -281,17 +301,10 @@ inline void Inertia(const StepPlan& plan, std::byte* block, ExactScratch& scratc
     const BodyLanes& body = BodyAt(plan, block, b);
     ForEachChunk([&](std::size_t offset) {
       StoreSym33(BodyInverseInertia(body, offset), scratch.inverse_inertia[b], offset);
-      StoreSym33(ZeroSym33(), scratch.stiffness[b], offset);
     });
   }
   if (stiffness <= 0.0f) return;
-  const LaneVec factor = Splat(stiffness);
-  ForEachPull(plan, block, [&](std::size_t b, const BodyLanes&, const Vec3& r, LaneVec pull,
-                               std::size_t offset) {
-    Sym33 g = LoadSym33(scratch.stiffness[b], offset);
-    AddTransverseStiffness(hn::Mul(factor, hn::Max(pull, Zero())), r, g);
-    StoreSym33(g, scratch.stiffness[b], offset);
-  });
+  SumGeometricStiffness(plan, block, scratch, stiffness);
   for (std::size_t b = 0; b < plan.bodies.size(); ++b) {
     if (plan.bodies[b].motion != MotionType::kDynamic) continue;
     ForEachChunk([&](std::size_t offset) {
