@@ -41,7 +41,7 @@ inline void SetupConstraint(const ConstraintBlock& c, const StepScalars& step) {
     case ConstraintType::kPulley: return PulleyConstraintSetup(c, step);
     case ConstraintType::kCone: return ConeConstraintSetup(c, step);
     case ConstraintType::kSwingTwist: return SwingTwistConstraintSetup(c, step);
-    case ConstraintType::kSixDof: return SixDofConstraintSetup(c, step);
+    case ConstraintType::kSixDof: return SixDofConstraintSetup(c, step, SixDofRows::kAll);
     case ConstraintType::kPath: return PathConstraintSetup(c, step);
   }
 }
@@ -58,7 +58,7 @@ inline void WarmStartConstraint(const ConstraintBlock& c, const StepScalars& ste
     case ConstraintType::kPulley: return PulleyConstraintWarmStart(c, step);
     case ConstraintType::kCone: return ConeConstraintWarmStart(c, step);
     case ConstraintType::kSwingTwist: return SwingTwistConstraintWarmStart(c, step);
-    case ConstraintType::kSixDof: return SixDofConstraintWarmStart(c, step);
+    case ConstraintType::kSixDof: return SixDofConstraintWarmStart(c, step, SixDofRows::kAll);
     case ConstraintType::kPath: return PathConstraintWarmStart(c, step);
   }
 }
@@ -75,7 +75,7 @@ inline bool SolveConstraintVelocity(const ConstraintBlock& c) {
     case ConstraintType::kPulley: return PulleyConstraintSolveVelocity(c);
     case ConstraintType::kCone: return ConeConstraintSolveVelocity(c);
     case ConstraintType::kSwingTwist: return SwingTwistConstraintSolveVelocity(c);
-    case ConstraintType::kSixDof: return SixDofConstraintSolveVelocity(c);
+    case ConstraintType::kSixDof: return SixDofConstraintSolveVelocity(c, SixDofRows::kAll);
     case ConstraintType::kPath: return PathConstraintSolveVelocity(c);
   }
   return false;
@@ -95,7 +95,7 @@ inline bool SolveConstraintPosition(const StepPlan& plan, const ConstraintBlock&
     case ConstraintType::kPulley: return PulleyConstraintSolvePosition(c, step);
     case ConstraintType::kCone: return ConeConstraintSolvePosition(c, step);
     case ConstraintType::kSwingTwist: return SwingTwistConstraintSolvePosition(c, step);
-    case ConstraintType::kSixDof: return SixDofConstraintSolvePosition(c, step);
+    case ConstraintType::kSixDof: return SixDofConstraintSolvePosition(c, step, SixDofRows::kAll);
     case ConstraintType::kPath: return PathConstraintSolvePosition(c, step);
   }
   return false;

@@ -1,7 +1,9 @@
 // The rows the exact solve leaves to Gauss-Seidel: hinge and slider motors,
-// friction and limits, swing-twist limits and drives, the cone row, and
-// every row of the distance, pulley, six-DOF and path constraints
-// (ExactSolvePlan::inequality, ExactSolvePlan::SolvedWhole). Their impulses
+// friction and limits, swing-twist limits and drives, the cone row, a
+// six-DOF constraint's rows beside its all-fixed shortcuts, and every row of
+// the distance, pulley and path constraints and of six-DOF constraints
+// without a shortcut (ExactSolvePlan::inequality, ExactSolvePlan::SolvedWhole).
+// Their impulses
 // are bounded (a motor's force limits, a limit's one-sided push, a rope that
 // only pulls), which a linear solve of K cannot respect, or soft (springs),
 // so they are solved as Jolt does, one row at a
@@ -32,8 +34,9 @@
 //
 // The parts and their per-lane decisions are the Gauss-Seidel constraint's
 // own (batch/hinge_constraint-inl.h, batch/slider_constraint-inl.h,
-// batch/swing_twist_constraint-inl.h, batch/cone_constraint-inl.h; the
-// types solved whole call their constraint's verbs), so the rows behave as
+// batch/swing_twist_constraint-inl.h, batch/cone_constraint-inl.h,
+// batch/six_dof_constraint-inl.h; the constraints solved whole call their
+// constraint's verbs), so the rows behave as
 // they do there; only their neighbours differ. A rigid distance or pulley,
 // or a six-DOF or path's locked axes, move the bodies in every position
 // pass (their error is never exactly zero), so a scene with them takes all
@@ -53,6 +56,7 @@
 #include "batch/constraint_verbs-inl.h"
 #include "batch/exact_plan.h"
 #include "batch/hinge_constraint-inl.h"
+#include "batch/six_dof_constraint-inl.h"
 #include "batch/slider_constraint-inl.h"
 #include "batch/swing_twist_constraint-inl.h"
 
@@ -64,9 +68,14 @@ namespace exact {
 // Setup at the current poses and warm start (the hinge's angle and axes
 // are those HingeTurns wrote), drives before limits as Gauss-Seidel.
 inline void InequalitySetupAndWarmStart(const ConstraintBlock& c, const StepScalars& step) {
-  if (ExactSolvePlan::SolvedWhole(c.plan.type)) {
+  if (ExactSolvePlan::SolvedWhole(c.plan)) {
     SetupConstraint(c, step);
     WarmStartConstraint(c, step);
+    return;
+  }
+  if (c.plan.type == ConstraintType::kSixDof) {
+    SixDofConstraintSetup(c, step, SixDofRows::kBesideShortcuts);
+    SixDofConstraintWarmStart(c, step, SixDofRows::kBesideShortcuts);
     return;
   }
   const float ratio = step.warm_start_ratio;
@@ -107,7 +116,10 @@ inline void InequalitySetupAndWarmStart(const ConstraintBlock& c, const StepScal
 // One velocity step of the motor (drives), then the limits; every row of a
 // constraint solved whole. True if any lane applied an impulse.
 inline bool InequalitySolveVelocity(const ConstraintBlock& c) {
-  if (ExactSolvePlan::SolvedWhole(c.plan.type)) return SolveConstraintVelocity(c);
+  if (ExactSolvePlan::SolvedWhole(c.plan)) return SolveConstraintVelocity(c);
+  if (c.plan.type == ConstraintType::kSixDof) {
+    return SixDofConstraintSolveVelocity(c, SixDofRows::kBesideShortcuts);
+  }
   if (c.plan.type == ConstraintType::kCone) {
     auto& s = c.Main<ConeConstraintLanes>();
     return AngleSolveVelocity(c.bodies, s.geometry, s.angle);
@@ -145,7 +157,10 @@ inline bool InequalitySolveVelocity(const ConstraintBlock& c) {
 // constraint solved whole); true if any lane moved.
 inline bool LimitSolvePosition(const StepPlan& plan, const ConstraintBlock& c,
                                const StepScalars& step) {
-  if (ExactSolvePlan::SolvedWhole(c.plan.type)) return SolveConstraintPosition(plan, c, step);
+  if (ExactSolvePlan::SolvedWhole(c.plan)) return SolveConstraintPosition(plan, c, step);
+  if (c.plan.type == ConstraintType::kSixDof) {
+    return SixDofConstraintSolvePosition(c, step, SixDofRows::kBesideShortcuts);
+  }
   if (c.plan.type == ConstraintType::kCone) {
     auto& s = c.Main<ConeConstraintLanes>();
     ConeRotationProperties(c);

@@ -43,10 +43,12 @@ bool ExactSolvePlan::only_points() const {
 
 namespace {
 
-// The row groups of each constraint type the exact solve factors; empty for
-// the types it leaves whole to Gauss-Seidel (SolvedWhole).
-std::vector<ExactRows> GroupsOf(ConstraintType type) {
-  switch (type) {
+// The row groups of a constraint the exact solve factors; empty for the
+// constraints it leaves whole to Gauss-Seidel (SolvedWhole). A six-DOF
+// constraint's groups are its all-fixed shortcuts (batch/plan.h,
+// SixDofConfig), in the fixed constraint's order.
+std::vector<ExactRows> GroupsOf(const ConstraintPlan& c) {
+  switch (c.type) {
     case ConstraintType::kPoint: return {ExactRows::kPoint};
     case ConstraintType::kHinge: return {ExactRows::kPoint, ExactRows::kHingeRotation};
     case ConstraintType::kFixed: return {ExactRows::kPoint, ExactRows::kRotation};
@@ -55,21 +57,49 @@ std::vector<ExactRows> GroupsOf(ConstraintType type) {
     case ConstraintType::kRackAndPinion: return {ExactRows::kRackAndPinion};
     case ConstraintType::kSwingTwist: return {ExactRows::kPoint};  // limits and drives bounded
     case ConstraintType::kCone: return {ExactRows::kPoint};        // the cone row bounded
+    case ConstraintType::kSixDof: {
+      std::vector<ExactRows> groups;
+      if (c.six_dof.translation_point) groups.push_back(ExactRows::kPoint);
+      if (c.six_dof.rotation_euler) groups.push_back(ExactRows::kRotation);
+      return groups;
+    }
     case ConstraintType::kDistance: case ConstraintType::kPulley:  // SolvedWhole
-    case ConstraintType::kSixDof: case ConstraintType::kPath:
+    case ConstraintType::kPath:
       return {};
   }
   return {};
 }
 
+// A six-DOF constraint's rows beside its groups (translation rows and
+// drives where translation is not the point shortcut, swing-twist rows and
+// drives where rotation is not the Euler one; an all-fixed shortcut's
+// drives are not used, as in Jolt), and whether any of them takes position
+// steps (hard translation rows, rotation limits; drives take none).
+bool SixDofHasRowsBesideGroups(const ConstraintPlan& c) {
+  const SixDofConfig& config = c.six_dof;
+  return (!config.translation_point &&
+          (config.translation_rows || config.has_translation_drives())) ||
+         (!config.rotation_euler && (config.rotation_limits || c.has_rotation_drives()));
+}
+bool SixDofRowsBesideGroupsTakePositionSteps(const SixDofConfig& config) {
+  bool hard_translation = false;
+  for (int i = 0; i < 3; ++i) {
+    hard_translation |= config.translation_rows &&
+                        config.translation[i] != AxisLimitKind::kFree &&
+                        !config.translation_soft[i];
+  }
+  return hard_translation || (!config.rotation_euler && config.rotation_limits);
+}
+
 }  // namespace
 
-bool ExactSolvePlan::SolvedWhole(ConstraintType type) {
+bool ExactSolvePlan::SolvedWhole(const ConstraintPlan& c) {
   // Called per constraint and pass by the step: no GroupsOf (it allocates).
-  switch (type) {
-    case ConstraintType::kDistance: case ConstraintType::kPulley:
-    case ConstraintType::kSixDof: case ConstraintType::kPath:
+  switch (c.type) {
+    case ConstraintType::kDistance: case ConstraintType::kPulley: case ConstraintType::kPath:
       return true;
+    case ConstraintType::kSixDof:
+      return !c.six_dof.translation_point && !c.six_dof.rotation_euler;
     default: return false;
   }
 }
@@ -89,7 +119,7 @@ std::string Unavailable(const Scene& scene, const StepPlan& plan) {
     return motion == MotionType::kDynamic && scene.bodies()[body].allowed_dofs == AllowedDofs::kAll;
   };
   for (const ConstraintPlan& c : plan.constraints) {
-    if (ExactSolvePlan::SolvedWhole(c.type) || free(c.body1, c.motion1) ||
+    if (ExactSolvePlan::SolvedWhole(c) || free(c.body1, c.motion1) ||
         free(c.body2, c.motion2)) {
       continue;
     }
@@ -108,7 +138,7 @@ std::string Unavailable(const Scene& scene, const StepPlan& plan) {
   const std::size_t kFixedFrame = plan.bodies.size();
   for (std::size_t i = 0; i < plan.constraints.size(); ++i) {
     const ConstraintPlan& c = plan.constraints[i];
-    if (ExactSolvePlan::SolvedWhole(c.type)) continue;  // none of its rows is in K
+    if (ExactSolvePlan::SolvedWhole(c)) continue;  // none of its rows is in K
     const std::size_t a = c.motion1 == MotionType::kDynamic ? c.body1 : kFixedFrame;
     const std::size_t b = c.motion2 == MotionType::kDynamic ? c.body2 : kFixedFrame;
     const auto [it, first] = joined.emplace(std::minmax(a, b), i);
@@ -134,7 +164,7 @@ ExactSolvePlan PlanExactSolve(const Scene& scene, const StepPlan& plan) {
   Attachments attached(plan.bodies.size());
   for (std::size_t i = 0; i < plan.constraints.size(); ++i) {
     const ConstraintPlan& c = plan.constraints[i];
-    for (ExactRows rows : GroupsOf(c.type)) {
+    for (ExactRows rows : GroupsOf(c)) {
       const std::size_t g = groups.size();
       groups.push_back({i, rows});
       if (c.motion1 == MotionType::kDynamic) attached[c.body1].push_back({g, false});
@@ -148,9 +178,12 @@ ExactSolvePlan PlanExactSolve(const Scene& scene, const StepPlan& plan) {
     // position steps (a rigid distance or pulley, a six-DOF or path's locked
     // axes).
     if (c.type == ConstraintType::kSwingTwist || c.type == ConstraintType::kCone ||
-        ExactSolvePlan::SolvedWhole(c.type)) {
+        ExactSolvePlan::SolvedWhole(c)) {
       exact.inequality.push_back(i);
       exact.hard_limits = true;
+    } else if (c.type == ConstraintType::kSixDof) {
+      if (SixDofHasRowsBesideGroups(c)) exact.inequality.push_back(i);
+      exact.hard_limits |= SixDofRowsBesideGroupsTakePositionSteps(c.six_dof);
     } else if (c.has_limits() || c.has_motor()) {  // only hinges and sliders have them here
       exact.inequality.push_back(i);
       exact.hard_limits |= c.has_limits() && !c.soft_limits;

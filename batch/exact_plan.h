@@ -6,7 +6,10 @@
 // point and its two rotation rows), a fixed constraint two, a slider two (its
 // two translation rows and its three rotation rows), a gear or a rack and
 // pinion one (a single row), a cone one (its point group; the cone row is
-// bounded). Distance, pulley, six-DOF and path constraints have no group:
+// bounded), a six-DOF constraint its all-fixed shortcuts (a point group when
+// every translation is fixed without springs, a rotation group when every
+// rotation is fixed; its other rows are bounded). Distance, pulley and path
+// constraints, and six-DOF constraints with neither shortcut, have no group:
 // all their rows are solved by Gauss-Seidel around the exact solve
 // (SolvedWhole). A group of fewer than three rows is padded to
 // three with rows that touch nothing (K's diagonal 1 there, impulse 0), so
@@ -31,13 +34,16 @@ namespace manyworlds {
 
 class Scene;
 struct StepPlan;
+struct ConstraintPlan;                     // batch/plan.h
 enum class ConstraintType : std::uint8_t;  // batch/plan.h
 
 // The kinds of row group (batch/exact_rows-inl.h has each one's J and C).
 enum class ExactRows : std::uint8_t {
-  kPoint,          // 3 rows: the anchors' separation (ball, hinge, fixed, swing-twist, cone)
+  kPoint,          // 3 rows: the anchors' separation (ball, hinge, fixed, swing-twist, cone,
+                   //         six-DOF with every translation fixed)
   kHingeRotation,  // 2 rows: the hinge axes aligned
-  kRotation,       // 3 rows: the relative rotation at rest (fixed, slider)
+  kRotation,       // 3 rows: the relative rotation at rest (fixed, slider, six-DOF with
+                   //         every rotation fixed)
   kSliderAxes,     // 2 rows: body 2's anchor on body 1's slider line
   kGear,           // 1 row:  theta1 + r theta2 = 0
   kRackAndPinion,  // 1 row:  theta1 - r d2 = 0
@@ -65,17 +71,19 @@ struct ExactSolvePlan {
   // The constraints with rows solved by Gauss-Seidel around the exact solve
   // (batch/exact_inequality_rows-inl.h), in scene order: the hinges and
   // sliders with motors, friction or limits, the swing-twist constraints
-  // (limits, drives), the cones (the cone row), and the constraints solved
-  // whole (SolvedWhole); whether any of them takes position steps.
+  // (limits, drives), the cones (the cone row), the six-DOF constraints'
+  // rows beside their groups, and the constraints solved whole
+  // (SolvedWhole); whether any of them takes position steps.
   std::vector<std::size_t> inequality;
   bool hard_limits = false;
 
-  // Whether a constraint type has no row group, so that the exact solve
-  // leaves all its rows to Gauss-Seidel (distance, pulley, six-DOF, path):
-  // their rows are inequalities (a rope, a strut, a pulley's length range)
-  // or soft (springs), or their locked axes change with the free ones
-  // (six-DOF, path), which the solve's fixed groups do not model.
-  static bool SolvedWhole(ConstraintType type);
+  // Whether a constraint has no row group, so that the exact solve leaves
+  // all its rows to Gauss-Seidel (distance, pulley, path, and six-DOF
+  // without an all-fixed shortcut): their rows are inequalities (a rope, a
+  // strut, a pulley's length range) or soft (springs), or their locked axes
+  // change with the free ones (a six-DOF's fixed axes beside free ones, a
+  // path), which the solve's fixed groups do not model.
+  static bool SolvedWhole(const ConstraintPlan& constraint);
 
   // Off-diagonal block `block` couples positions first < second (rows of
   // `first`, columns of `second`).

@@ -5,12 +5,16 @@
 // count are zero (padding). Per kind, with r1, r2 the lever arms (COM to
 // anchor, world), u = p2 - p1 the anchors' separation:
 //
-//   point (ball, hinge, fixed, swing-twist, cone)  C = u
+//   point (ball, hinge, fixed, swing-twist, cone, six-DOF)  C = u
 //     J_i = [-e_i, -(r1 x e_i), e_i, r2 x e_i]
+//     (a six-DOF's anchor on body 1 is moved by c1 min, its fixed offset,
+//     in both phases: Gauss-Seidel moves it in the position phase only, as
+//     Jolt does, which leaves its velocity rows off the constrained point)
 //   hinge rotation  a1 = R1 a1_local, a2 = R2 a2_local (Jolt's repair near
 //     90 degrees, kernels/hinge_rotation-inl.h), b2 = perp(a2), c2 = a2 x b2
 //     C = (a1 . b2, a1 . c2)      J_i = [0, -(e_i x a1), 0, e_i x a1], e = b2, c2
-//   rotation (fixed, slider)  C = 2 xyz(q2 r0^-1 q1*), w >= 0
+//   rotation (fixed, slider, six-DOF)  C = 2 xyz(q2 r0^-1 q1*), w >= 0
+//     (a six-DOF's r0^-1 = c2 (c1 euler(min))*, its fixed rotation)
 //     J = [0, -E, 0, E]           (dC/dt = w2 - w1 to first order in C)
 //   slider axes  n_i = R1 (normal, binormal)_local
 //     C_i = u . n_i               J_i = [-n_i, -((r1 + u) x n_i), n_i, r2 x n_i]
@@ -91,6 +95,7 @@ HWY_INLINE Mat33 Negated(const Mat33& a) {
 // The anchors and point part of a constraint with a point group.
 HWY_INLINE const PointGeometry& PointAnchors(const ConstraintBlock& c) {
   switch (c.plan.type) {
+    case ConstraintType::kSixDof: return c.Main<SixDofConstraintLanes>().fixed_anchors;
     case ConstraintType::kHinge: return c.Main<HingeConstraintLanes>().anchors;
     case ConstraintType::kFixed: return c.Main<FixedConstraintLanes>().anchors;
     case ConstraintType::kSwingTwist: return c.Main<SwingTwistConstraintLanes>().anchors;
@@ -100,11 +105,21 @@ HWY_INLINE const PointGeometry& PointAnchors(const ConstraintBlock& c) {
 }
 HWY_INLINE PointLanes& PointPart(const ConstraintBlock& c) {
   switch (c.plan.type) {
+    case ConstraintType::kSixDof: return c.Main<SixDofConstraintLanes>().point;
     case ConstraintType::kHinge: return c.Main<HingeConstraintLanes>().point;
     case ConstraintType::kFixed: return c.Main<FixedConstraintLanes>().point;
     case ConstraintType::kSwingTwist: return c.Main<SwingTwistConstraintLanes>().point;
     case ConstraintType::kCone: return c.Main<ConeConstraintLanes>().point;
     default: return c.Main<PointConstraintLanes>().point;
+  }
+}
+
+// r0^-1 of a constraint with a rotation group.
+HWY_INLINE const QuatLanes& RestOrientationInverse(const ConstraintBlock& c) {
+  switch (c.plan.type) {
+    case ConstraintType::kFixed: return c.Main<FixedConstraintLanes>().inv_initial_orientation;
+    case ConstraintType::kSixDof: return c.Main<SixDofConstraintLanes>().inv_initial_orientation;
+    default: return c.Main<SliderConstraintLanes>().inv_initial_orientation;
   }
 }
 
@@ -172,13 +187,11 @@ HWY_INLINE GroupRows RowsOfChunk(const StepPlan& plan, const ConstraintBlock& c,
       break;
     }
     case ExactRows::kRotation: {
-      const bool fixed = c.plan.type == ConstraintType::kFixed;
       Assign(rows.angular[0], Negated(Identity33()));
       Assign(rows.angular[1], Identity33());
       if (with_error) {
-        const QuatLanes& r0_inverse = fixed ? c.Main<FixedConstraintLanes>().inv_initial_orientation
-                                            : c.Main<SliderConstraintLanes>().inv_initial_orientation;
-        rows.error = RotationEulerError(c.bodies, LoadQuat(r0_inverse, offset), offset);
+        rows.error = RotationEulerError(c.bodies, LoadQuat(RestOrientationInverse(c), offset),
+                                        offset);
       }
       break;
     }

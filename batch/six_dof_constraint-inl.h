@@ -21,6 +21,11 @@
 // moved by c1 min; or per hard axis, recomputed at the current poses, one
 // axis step on its error: d - min fixed, the violated bound limited, none
 // inside). Drives take no position steps.
+//
+// Each verb takes which rows it solves (SixDofRows): all of them
+// (Gauss-Seidel), or all but the all-fixed shortcuts, which the exact joint
+// solve factors as its point and rotation groups (batch/exact_plan.h) and
+// solves the other rows around (batch/exact_inequality_rows-inl.h).
 
 #if defined(MANYWORLDS_BATCH_SIX_DOF_CONSTRAINT_INL_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef MANYWORLDS_BATCH_SIX_DOF_CONSTRAINT_INL_H_
@@ -117,15 +122,22 @@ inline void SixDofTranslationDriveProperties(const ConstraintBlock& c, int i,
                               step.delta_time, no_spring, motor.geometry, motor.part);
 }
 
+enum class SixDofRows : bool {
+  kAll,              // Gauss-Seidel: every row
+  kBesideShortcuts,  // the exact solve's: not the point and rotation-Euler shortcuts
+};
+
 HWY_INLINE bool SixDofHasTranslationRow(const SixDofConfig& config, int i) {
   return config.translation_rows && config.translation[i] != AxisLimitKind::kFree;
 }
 
-inline void SixDofConstraintSetup(const ConstraintBlock& c, const StepScalars& step) {
+inline void SixDofConstraintSetup(const ConstraintBlock& c, const StepScalars& step,
+                                  SixDofRows rows) {
   auto& s = c.Main<SixDofConstraintLanes>();
   const SixDofConfig& config = c.plan.six_dof;
+  const bool shortcuts = rows == SixDofRows::kAll;
   if (config.translation_point) {
-    PointCalculateProperties(c.bodies, s.anchors, s.point);
+    if (shortcuts) PointCalculateProperties(c.bodies, s.anchors, s.point);
   } else if (config.translation_rows || config.has_translation_drives()) {
     SixDofTranslationGeometry(c);
     for (int i = 0; i < 3; ++i) {
@@ -136,7 +148,7 @@ inline void SixDofConstraintSetup(const ConstraintBlock& c, const StepScalars& s
     }
   }
   if (config.rotation_euler) {
-    RotationEulerCalculateProperties(c.bodies, s.rotation);
+    if (shortcuts) RotationEulerCalculateProperties(c.bodies, s.rotation);
   } else if (config.rotation_limits) {
     SwingTwistCalculateProperties(c.bodies, c.plan.swing_twist, s.frames, s.rotation_limits,
                                   s.swing_twist);
@@ -144,9 +156,11 @@ inline void SixDofConstraintSetup(const ConstraintBlock& c, const StepScalars& s
   if (c.plan.has_rotation_drives()) RotationDriveProperties(c, s.frames, s.rotation_limits, step);
 }
 
-inline void SixDofConstraintWarmStart(const ConstraintBlock& c, const StepScalars& step) {
+inline void SixDofConstraintWarmStart(const ConstraintBlock& c, const StepScalars& step,
+                                      SixDofRows rows) {
   auto& s = c.Main<SixDofConstraintLanes>();
   const SixDofConfig& config = c.plan.six_dof;
+  const bool shortcuts = rows == SixDofRows::kAll;
   const float ratio = step.warm_start_ratio;
   for (int i = 0; i < 3; ++i) {
     if (config.translation_drives[i] == DriveKind::kNone) continue;
@@ -155,11 +169,11 @@ inline void SixDofConstraintWarmStart(const ConstraintBlock& c, const StepScalar
   }
   if (c.plan.has_rotation_drives()) RotationDriveWarmStart(c, ratio);
   if (config.rotation_euler) {
-    RotationEulerWarmStart(c.bodies, s.rotation, ratio);
+    if (shortcuts) RotationEulerWarmStart(c.bodies, s.rotation, ratio);
   } else if (config.rotation_limits) {
     SwingTwistWarmStart(c.bodies, c.plan.swing_twist, s.swing_twist, ratio);
   }
-  if (config.translation_point) PointWarmStart(c.bodies, s.point, ratio);
+  if (config.translation_point && shortcuts) PointWarmStart(c.bodies, s.point, ratio);
   for (int i = 0; i < 3; ++i) {
     if (!SixDofHasTranslationRow(config, i)) continue;
     auto& limit = (&c.Limit<LinearLimitLanes>())[i];
@@ -167,9 +181,10 @@ inline void SixDofConstraintWarmStart(const ConstraintBlock& c, const StepScalar
   }
 }
 
-inline bool SixDofConstraintSolveVelocity(const ConstraintBlock& c) {
+inline bool SixDofConstraintSolveVelocity(const ConstraintBlock& c, SixDofRows rows) {
   auto& s = c.Main<SixDofConstraintLanes>();
   const SixDofConfig& config = c.plan.six_dof;
+  const bool shortcuts = rows == SixDofRows::kAll;
   bool applied = false;
   for (int i = 0; i < 3; ++i) {
     if (config.translation_drives[i] == DriveKind::kNone) continue;
@@ -178,11 +193,11 @@ inline bool SixDofConstraintSolveVelocity(const ConstraintBlock& c) {
   }
   if (c.plan.has_rotation_drives()) applied |= RotationDriveSolveVelocity(c);
   if (config.rotation_euler) {
-    applied |= RotationEulerSolveVelocity(c.bodies, s.rotation);
+    if (shortcuts) applied |= RotationEulerSolveVelocity(c.bodies, s.rotation);
   } else if (config.rotation_limits) {
     applied |= SwingTwistSolveVelocity(c.bodies, c.plan.swing_twist, s.swing_twist);
   }
-  if (config.translation_point) applied |= PointSolveVelocity(c.bodies, s.point);
+  if (config.translation_point && shortcuts) applied |= PointSolveVelocity(c.bodies, s.point);
   for (int i = 0; i < 3; ++i) {
     if (!SixDofHasTranslationRow(config, i)) continue;
     auto& limit = (&c.Limit<LinearLimitLanes>())[i];
@@ -219,18 +234,22 @@ inline bool SixDofTranslationPositionStep(const ConstraintBlock& c, int i,
   return AxisSolvePosition(c.bodies, limit.geometry, limit.part, step.baumgarte);
 }
 
-inline bool SixDofConstraintSolvePosition(const ConstraintBlock& c, const StepScalars& step) {
+inline bool SixDofConstraintSolvePosition(const ConstraintBlock& c, const StepScalars& step,
+                                          SixDofRows rows) {
   auto& s = c.Main<SixDofConstraintLanes>();
   const SixDofConfig& config = c.plan.six_dof;
+  const bool shortcuts = rows == SixDofRows::kAll;
   bool applied = false;
   if (config.rotation_euler) {
-    applied |= RotationEulerRecomputeAndSolvePosition(c.bodies, s.inv_initial_orientation,
-                                                      s.rotation, step.baumgarte);
+    if (shortcuts) {
+      applied |= RotationEulerRecomputeAndSolvePosition(c.bodies, s.inv_initial_orientation,
+                                                        s.rotation, step.baumgarte);
+    }
   } else if (config.rotation_limits) {
     applied |= SwingTwistSolvePosition(c.bodies, c.plan.swing_twist, s.frames,
                                        s.rotation_limits, step.baumgarte);
   }
-  if (config.translation_point) {
+  if (config.translation_point && shortcuts) {
     applied |= PointRecomputeAndSolvePosition(c.bodies, s.fixed_anchors, s.point, step.baumgarte);
   }
   for (int i = 0; i < 3; ++i) {

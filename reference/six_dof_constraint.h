@@ -152,9 +152,74 @@ class SixDofConstraint {
   void SetTargetLinearVelocity(const Vec3<T>& v) { target_velocity_ = v; }
 
   void SetupVelocityConstraint(const Body<T>& body1, const Body<T>& body2, T dt) {
+    Setup(body1, body2, dt, true);
+  }
+  void WarmStartVelocityConstraint(Body<T>& body1, Body<T>& body2, T warm_start_ratio) {
+    WarmStart(body1, body2, warm_start_ratio, true);
+  }
+  bool SolveVelocityConstraint(Body<T>& body1, Body<T>& body2, T dt) {
+    return SolveVelocity(body1, body2, dt, true);
+  }
+  bool SolvePositionConstraint(Body<T>& body1, Body<T>& body2, T /*dt*/, T baumgarte) {
+    return SolvePosition(body1, body2, baumgarte, true);
+  }
+
+  // The exact solve's view (reference/world.h): its groups are the all-fixed
+  // shortcuts (the point on body 1's anchor moved by c1 min, the rotation
+  // towards r0^-1), and it leaves the other rows to Gauss-Seidel.
+  bool translation_point() const { return translation_point_; }
+  bool rotation_euler() const { return rotation_euler_; }
+  bool HasExactGroups() const { return translation_point_ || rotation_euler_; }
+  bool HasInequalityRows() const {
+    return (!translation_point_ && (translation_rows_ || TranslationDrivesInUse())) ||
+           (!rotation_euler_ && (rotation_limits_ || drive_.InUse()));
+  }
+  const Vec3<T>& fixed_point1() const { return fixed_point1_; }
+  const Vec3<T>& local_point2() const { return local_point2_; }
+  const Quat<T>& inv_initial_orientation() const { return inv_initial_orientation_; }
+  void SetupInequalityRows(const Body<T>& body1, const Body<T>& body2, T dt) {
+    Setup(body1, body2, dt, false);
+  }
+  void WarmStartInequalityRows(Body<T>& body1, Body<T>& body2, T warm_start_ratio) {
+    WarmStart(body1, body2, warm_start_ratio, false);
+  }
+  bool SolveInequalityVelocity(Body<T>& body1, Body<T>& body2, T dt) {
+    return SolveVelocity(body1, body2, dt, false);
+  }
+  bool SolveLimitPosition(Body<T>& body1, Body<T>& body2, T /*dt*/, T baumgarte) {
+    return SolvePosition(body1, body2, baumgarte, false);
+  }
+  // The point part's accumulated impulse (the exact solve's point group).
+  Vec3<T> PointImpulse() const { return point_.SaveState(); }
+
+  // Solver state (reference/solver_state.h), in the batch's order
+  // (docs/stepping.md, "Solver state of one world").
+  void SaveSolverState(SolverStateWriter<T>& out) const {
+    for (const AxisPart<T>& part : motor_) out(part.SaveState());
+    drive_.SaveSolverState(out);
+    out(rotation_.SaveState());
+    out(swing_twist_.SaveState());
+    out(point_.SaveState());
+    for (const AxisPart<T>& part : limit_) out(part.SaveState());
+  }
+  void RestoreSolverState(SolverStateReader<T>& in) {
+    for (AxisPart<T>& part : motor_) part.RestoreState(in.Scalar());
+    drive_.RestoreSolverState(in);
+    rotation_.RestoreState(in.Vector3());
+    swing_twist_.RestoreState(in.Vector3());
+    point_.RestoreState(in.Vector3());
+    for (AxisPart<T>& part : limit_) part.RestoreState(in.Scalar());
+  }
+
+ private:
+  // The verbs on every row (`shortcuts`, Gauss-Seidel) or on every row but
+  // the all-fixed shortcuts (the exact solve's groups).
+  void Setup(const Body<T>& body1, const Body<T>& body2, T dt, bool shortcuts) {
     const Quat<T> frame1 = body1.rotation * constraint_to_body1_;
     if (translation_point_) {
-      point_.CalculateConstraintProperties(body1, local_point1_, body2, local_point2_);
+      if (shortcuts) {
+        point_.CalculateConstraintProperties(body1, local_point1_, body2, local_point2_);
+      }
     } else if (translation_rows_ || TranslationDrivesInUse()) {
       CalculateTranslationFrame(body1, body2);
       for (int i = 0; i < 3; ++i) {
@@ -163,7 +228,7 @@ class SixDofConstraint {
       }
     }
     if (rotation_euler_) {
-      rotation_.CalculateConstraintProperties(body1, body2);
+      if (shortcuts) rotation_.CalculateConstraintProperties(body1, body2);
     } else if (rotation_limits_ || drive_.InUse()) {
       const Quat<T> frame2 = body2.rotation * constraint_to_body2_;
       const Quat<T> q = frame1.conjugate() * frame2;
@@ -172,20 +237,20 @@ class SixDofConstraint {
     }
   }
 
-  void WarmStartVelocityConstraint(Body<T>& body1, Body<T>& body2, T warm_start_ratio) {
+  void WarmStart(Body<T>& body1, Body<T>& body2, T warm_start_ratio, bool shortcuts) {
     if (!translation_point_) {
       for (int i = 0; i < 3; ++i) motor_[i].WarmStart(body1, body2, axis_[i], warm_start_ratio);
     }
     if (!rotation_euler_) drive_.WarmStart(body1, body2, warm_start_ratio);
-    if (rotation_euler_) rotation_.WarmStart(body1, body2, warm_start_ratio);
+    if (rotation_euler_ && shortcuts) rotation_.WarmStart(body1, body2, warm_start_ratio);
     if (rotation_limits_) swing_twist_.WarmStart(body1, body2, warm_start_ratio);
-    if (translation_point_) point_.WarmStart(body1, body2, warm_start_ratio);
+    if (translation_point_ && shortcuts) point_.WarmStart(body1, body2, warm_start_ratio);
     for (int i = 0; i < 3; ++i) {
       if (HasTranslationRow(i)) limit_[i].WarmStart(body1, body2, axis_[i], warm_start_ratio);
     }
   }
 
-  bool SolveVelocityConstraint(Body<T>& body1, Body<T>& body2, T dt) {
+  bool SolveVelocity(Body<T>& body1, Body<T>& body2, T dt, bool shortcuts) {
     bool applied = false;
     for (int i = 0; i < 3 && !translation_point_; ++i) {
       if (!motor_[i].IsActive()) continue;
@@ -197,9 +262,9 @@ class SixDofConstraint {
     if (!rotation_euler_ && drive_.InUse()) {
       applied |= drive_.SolveVelocityConstraint(body1, body2, dt);
     }
-    if (rotation_euler_) applied |= rotation_.SolveVelocityConstraint(body1, body2);
+    if (rotation_euler_ && shortcuts) applied |= rotation_.SolveVelocityConstraint(body1, body2);
     if (rotation_limits_) applied |= swing_twist_.SolveVelocityConstraint(body1, body2);
-    if (translation_point_) applied |= point_.SolveVelocityConstraint(body1, body2);
+    if (translation_point_ && shortcuts) applied |= point_.SolveVelocityConstraint(body1, body2);
     for (int i = 0; i < 3; ++i) {
       if (!HasTranslationRow(i) || !limit_[i].IsActive()) continue;
       constexpr T kMax = std::numeric_limits<T>::max();
@@ -216,19 +281,21 @@ class SixDofConstraint {
     return applied;
   }
 
-  bool SolvePositionConstraint(Body<T>& body1, Body<T>& body2, T /*dt*/, T baumgarte) {
+  bool SolvePosition(Body<T>& body1, Body<T>& body2, T baumgarte, bool shortcuts) {
     bool applied = false;
     if (rotation_euler_) {
-      rotation_.CalculateConstraintProperties(body1, body2);
-      applied |= rotation_.SolvePositionConstraint(body1, body2, inv_initial_orientation_,
-                                                   baumgarte);
+      if (shortcuts) {
+        rotation_.CalculateConstraintProperties(body1, body2);
+        applied |= rotation_.SolvePositionConstraint(body1, body2, inv_initial_orientation_,
+                                                     baumgarte);
+      }
     } else if (rotation_limits_) {
       const Quat<T> q = (body1.rotation * constraint_to_body1_).conjugate() *
                         (body2.rotation * constraint_to_body2_);
       applied |= swing_twist_.SolvePositionConstraint(body1, body2, q, constraint_to_body1_,
                                                       constraint_to_body2_, baumgarte);
     }
-    if (translation_point_) {
+    if (translation_point_ && shortcuts) {
       point_.CalculateConstraintProperties(body1, fixed_point1_, body2, local_point2_);
       applied |= point_.SolvePositionConstraint(body1, body2, baumgarte);
     }
@@ -251,26 +318,6 @@ class SixDofConstraint {
     return applied;
   }
 
-  // Solver state (reference/solver_state.h), in the batch's order
-  // (docs/stepping.md, "Solver state of one world").
-  void SaveSolverState(SolverStateWriter<T>& out) const {
-    for (const AxisPart<T>& part : motor_) out(part.SaveState());
-    drive_.SaveSolverState(out);
-    out(rotation_.SaveState());
-    out(swing_twist_.SaveState());
-    out(point_.SaveState());
-    for (const AxisPart<T>& part : limit_) out(part.SaveState());
-  }
-  void RestoreSolverState(SolverStateReader<T>& in) {
-    for (AxisPart<T>& part : motor_) part.RestoreState(in.Scalar());
-    drive_.RestoreSolverState(in);
-    rotation_.RestoreState(in.Vector3());
-    swing_twist_.RestoreState(in.Vector3());
-    point_.RestoreState(in.Vector3());
-    for (AxisPart<T>& part : limit_) part.RestoreState(in.Scalar());
-  }
-
- private:
   static std::array<RotationDriveAxis<T>, 3> RotationDriveAxes(
       const SixDofConstraintSettings& s) {
     // An all-fixed rotation uses the rotation-Euler part and no drives.

@@ -411,12 +411,21 @@ class World {
         constraint);
   }
 
-  // The constraint types the exact solve leaves whole to Gauss-Seidel
-  // (ExactSolvePlan::SolvedWhole): none of their rows is in K.
+  // The constraints the exact solve leaves whole to Gauss-Seidel
+  // (ExactSolvePlan::SolvedWhole): none of their rows is in K. A six-DOF
+  // constraint is solved whole without an all-fixed shortcut.
   template <class Type>
-  static constexpr bool kSolvedWhole =
+  static constexpr bool kMaySolveWhole =
       std::is_same_v<Type, DistanceConstraint<T>> || std::is_same_v<Type, PulleyConstraint<T>> ||
       std::is_same_v<Type, SixDofConstraint<T>> || std::is_same_v<Type, PathConstraint<T>>;
+  template <class Type>
+  static bool IsSolvedWhole(const Type& c) {
+    if constexpr (std::is_same_v<Type, SixDofConstraint<T>>) {
+      return !c.HasExactGroups();
+    } else {
+      return kMaySolveWhole<Type>;
+    }
+  }
 
   // Such a constraint seen as the rows around the exact solve: every row of
   // it, with its own verbs.
@@ -439,10 +448,11 @@ class World {
 
   // JointSolver::kExact (reference/exact_solve.h): the equality rows of
   // point, hinge, fixed, slider, gear, rack-and-pinion, swing-twist and cone
-  // constraints; the hinges' and sliders' motors, friction and limits, the
-  // swing-twist limits and drives, the cone rows and every row of the
-  // distance, pulley, six-DOF and path constraints by Gauss-Seidel around
-  // them; every constraint with row groups on at least one dynamic body with
+  // constraints and the six-DOF constraints' all-fixed shortcuts; the hinges'
+  // and sliders' motors, friction and limits, the swing-twist limits and
+  // drives, the cone rows, the six-DOF constraints' other rows and every row
+  // of the distance, pulley and path constraints (and of six-DOF constraints
+  // without a shortcut) by Gauss-Seidel around them; every constraint with row groups on at least one dynamic body with
   // all six degrees of freedom (what the batch's plan takes).
   ExactJointSolve<T> ExactSolve(T stiffness) {
     // A constraint with row groups needs a dynamic body with all six DOFs
@@ -456,8 +466,7 @@ class World {
       if (!IsSolved(constraints_[index])) continue;
       std::visit(
           [&](const auto& c) {
-            using Type = std::decay_t<decltype(c)>;
-            if constexpr (!kSolvedWhole<Type>) {
+            if (!IsSolvedWhole(c)) {
               if (!free(c.body1()) && !free(c.body2())) {
                 throw std::invalid_argument("reference::World: constraint " +
                                             std::to_string(index) +
@@ -494,6 +503,13 @@ class World {
             } else if constexpr (std::is_same_v<Type, SliderConstraint<T>>) {
               groups.push_back(SliderAxesRows(c, bodies_));
               groups.push_back(RotationRows(c.body1(), c.body2(), bodies_, c.inv_initial_orientation()));
+            } else if constexpr (std::is_same_v<Type, SixDofConstraint<T>>) {
+              if (c.translation_point()) {
+                groups.push_back(PointRows(c.body1(), c.body2(), bodies_, c.fixed_point1(), c.local_point2()));
+              }
+              if (c.rotation_euler()) {
+                groups.push_back(RotationRows(c.body1(), c.body2(), bodies_, c.inv_initial_orientation()));
+              }
             } else if constexpr (std::is_same_v<Type, GearConstraint<T>>) {
               const bool measured = c.HasPositionCorrection();
               groups.push_back(GearRows(c, bodies_,
@@ -595,13 +611,14 @@ class World {
             [](const auto& c) {
               using Type = std::decay_t<decltype(c)>;
               if constexpr (std::is_same_v<Type, HingeConstraint<T>> ||
-                            std::is_same_v<Type, SliderConstraint<T>>) {
-                return c.HasInequalityRows();
+                            std::is_same_v<Type, SliderConstraint<T>> ||
+                            std::is_same_v<Type, SixDofConstraint<T>>) {
+                return IsSolvedWhole(c) || c.HasInequalityRows();
               } else {
                 // The swing-twist limits (and drives), the cone row, and
                 // the constraints solved whole.
                 return std::is_same_v<Type, SwingTwistConstraint<T>> ||
-                       std::is_same_v<Type, ConeConstraint<T>> || kSolvedWhole<Type>;
+                       std::is_same_v<Type, ConeConstraint<T>> || IsSolvedWhole(c);
               }
             },
             constraint);
@@ -613,13 +630,18 @@ class World {
           std::visit(
               [&](auto& c) {
                 using Type = std::decay_t<decltype(c)>;
-                if constexpr (kSolvedWhole<Type>) {
-                  SolvedWhole<Type> whole{c};
-                  any |= action(whole, bodies_[c.body1()], bodies_[c.body2()]);
-                } else if constexpr (std::is_same_v<Type, HingeConstraint<T>> ||
+                if constexpr (kMaySolveWhole<Type>) {
+                  if (IsSolvedWhole(c)) {
+                    SolvedWhole<Type> whole{c};
+                    any |= action(whole, bodies_[c.body1()], bodies_[c.body2()]);
+                    return;
+                  }
+                }
+                if constexpr (std::is_same_v<Type, HingeConstraint<T>> ||
                                      std::is_same_v<Type, SliderConstraint<T>> ||
                                      std::is_same_v<Type, SwingTwistConstraint<T>> ||
-                                     std::is_same_v<Type, ConeConstraint<T>>) {
+                                     std::is_same_v<Type, ConeConstraint<T>> ||
+                                     std::is_same_v<Type, SixDofConstraint<T>>) {
                   any |= action(c, bodies_[c.body1()], bodies_[c.body2()]);
                 }
               },

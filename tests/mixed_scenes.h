@@ -354,9 +354,13 @@ inline Scene MoreTypesScene() {
   rail.target_orientation = {0.3f, 0.0f, 0.0f, 0.95f};
   scene.AddConstraint(rail);
 
-  // Six-DOF with every axis fixed, at an offset: the point shortcut on an
-  // anchor moved by c1 min and the rotation-Euler shortcut towards
-  // c2 (c1 euler(min))*, between two dynamic bodies (local frames, turned
+  // Six-DOF with every translation fixed, at an offset: the point shortcut on
+  // an anchor moved by c1 min; every rotation limit is min = max too, but the
+  // swing type is a cone's (the default), whose swing limits become the
+  // symmetric +-max(0, max): the twist is fixed at 0.1 rad and the swings
+  // limited to +-0.2 and +-0.3 rad (swing-twist rows, not the rotation-Euler
+  // shortcut; tests/exact_solve_test.cc's Welded() has a pyramid's all-fixed
+  // rotation). Between two dynamic bodies (local frames, turned
   // away from the bodies' axes; the weld starts 0.37 rad and ~0.1 m from
   // rest). The driven carriage under this weld has rare steps where a
   // world's rounding is amplified ~1e5-fold, in the float reference as in

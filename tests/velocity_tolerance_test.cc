@@ -296,9 +296,9 @@ INSTANTIATE_TEST_SUITE_P(
     CaseName);
 
 // The exact solve's passes of block Gauss-Seidel around the joints solved at
-// once (motors, limits, contacts; more_types: cone rows, and the distance,
-// pulley, six-DOF and path constraints solved whole): scenes that have such
-// rows.
+// once (motors, limits, contacts; more_types: cone rows, six-DOF rows beside
+// their groups, and the distance, pulley, path and six-DOF constraints
+// solved whole): scenes that have such rows.
 INSTANTIATE_TEST_SUITE_P(
     Exact, VelocityToleranceTest,
     ::testing::Combine(::testing::ValuesIn(SupportedStepTargets()),
