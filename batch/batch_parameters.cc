@@ -51,7 +51,16 @@ void Batch::SetLimits(std::size_t world, std::size_t constraint, float min, floa
     LimitRange range{};
     switch (c.type) {
       case ConstraintType::kHinge: range = CheckHingeLimits(what, min, max); break;
-      case ConstraintType::kDistance: range = CheckDistanceLimits(what, min, max); break;
+      case ConstraintType::kDistance:
+        range = CheckDistanceLimits(what, min, max);
+        // Its rigidity is the scene's (the exact solve factors a rod's row):
+        // a rod's length may change per world, but it stays a rod.
+        if (c.rod && min != max) {
+          Refuse(what, "min_distance / max_distance",
+                 "must stay equal: a rod in the scene (DistanceConstraintSettings::rigid) "
+                 "stays a rod (got " + ValueText(min) + ", " + ValueText(max) + ")");
+        }
+        break;
       default:
         range = CheckTranslationLimits(what, "limits_min", "limits_max", min, max, true);
     }

@@ -16,14 +16,14 @@ int ExactRowCount(ExactRows rows) {
   switch (rows) {
     case ExactRows::kPoint: case ExactRows::kRotation: return 3;
     case ExactRows::kHingeRotation: case ExactRows::kSliderAxes: return 2;
-    case ExactRows::kGear: case ExactRows::kRackAndPinion: return 1;
+    case ExactRows::kGear: case ExactRows::kRackAndPinion: case ExactRows::kDistance: return 1;
   }
   return 0;
 }
 
 bool HasLinearRows(ExactRows rows, int side) {
   switch (rows) {
-    case ExactRows::kPoint: case ExactRows::kSliderAxes: return true;
+    case ExactRows::kPoint: case ExactRows::kSliderAxes: case ExactRows::kDistance: return true;
     case ExactRows::kHingeRotation: case ExactRows::kRotation: case ExactRows::kGear: return false;
     case ExactRows::kRackAndPinion: return side == 1;
   }
@@ -63,8 +63,10 @@ std::vector<ExactRows> GroupsOf(const ConstraintPlan& c) {
       if (c.six_dof.rotation_euler) groups.push_back(ExactRows::kRotation);
       return groups;
     }
-    case ConstraintType::kDistance: case ConstraintType::kPulley:  // SolvedWhole
-    case ConstraintType::kPath:
+    case ConstraintType::kDistance:
+      if (c.rod_group) return {ExactRows::kDistance};
+      return {};
+    case ConstraintType::kPulley: case ConstraintType::kPath:  // SolvedWhole
       return {};
   }
   return {};
@@ -96,8 +98,8 @@ bool SixDofRowsBesideGroupsTakePositionSteps(const SixDofConfig& config) {
 bool ExactSolvePlan::SolvedWhole(const ConstraintPlan& c) {
   // Called per constraint and pass by the step: no GroupsOf (it allocates).
   switch (c.type) {
-    case ConstraintType::kDistance: case ConstraintType::kPulley: case ConstraintType::kPath:
-      return true;
+    case ConstraintType::kPulley: case ConstraintType::kPath: return true;
+    case ConstraintType::kDistance: return !c.rod_group;
     case ConstraintType::kSixDof:
       return !c.six_dof.translation_point && !c.six_dof.rotation_euler;
     default: return false;
@@ -155,6 +157,26 @@ std::string Unavailable(const Scene& scene, const StepPlan& plan) {
 
 }  // namespace
 
+void ChooseRodGroups(const Scene& scene, StepPlan& plan) {
+  const std::size_t kFixedFrame = plan.bodies.size();
+  const auto end = [&](std::size_t body, MotionType motion) {
+    return motion == MotionType::kDynamic ? body : kFixedFrame;
+  };
+  const auto free = [&](std::size_t body, MotionType motion) {
+    return motion == MotionType::kDynamic && scene.bodies()[body].allowed_dofs == AllowedDofs::kAll;
+  };
+  std::set<std::pair<std::size_t, std::size_t>> joined;
+  for (const ConstraintPlan& c : plan.constraints) {
+    if (c.type == ConstraintType::kDistance || ExactSolvePlan::SolvedWhole(c)) continue;
+    joined.insert(std::minmax(end(c.body1, c.motion1), end(c.body2, c.motion2)));
+  }
+  for (ConstraintPlan& c : plan.constraints) {
+    if (c.type != ConstraintType::kDistance || !c.rod) continue;
+    if (!free(c.body1, c.motion1) && !free(c.body2, c.motion2)) continue;
+    c.rod_group = joined.insert(std::minmax(end(c.body1, c.motion1), end(c.body2, c.motion2))).second;
+  }
+}
+
 ExactSolvePlan PlanExactSolve(const Scene& scene, const StepPlan& plan) {
   ExactSolvePlan exact;
   exact.unavailable = Unavailable(scene, plan);
@@ -184,6 +206,8 @@ ExactSolvePlan PlanExactSolve(const Scene& scene, const StepPlan& plan) {
     } else if (c.type == ConstraintType::kSixDof) {
       if (SixDofHasRowsBesideGroups(c)) exact.inequality.push_back(i);
       exact.hard_limits |= SixDofRowsBesideGroupsTakePositionSteps(c.six_dof);
+    } else if (c.type == ConstraintType::kDistance) {
+      // A rod with a group: its one row is the group's.
     } else if (c.has_limits() || c.has_motor()) {  // only hinges and sliders have them here
       exact.inequality.push_back(i);
       exact.hard_limits |= c.has_limits() && !c.soft_limits;

@@ -8,7 +8,8 @@
 // pinion one (a single row), a cone one (its point group; the cone row is
 // bounded), a six-DOF constraint its all-fixed shortcuts (a point group when
 // every translation is fixed without springs, a rotation group when every
-// rotation is fixed; its other rows are bounded). Distance, pulley and path
+// rotation is fixed; its other rows are bounded), a rigid distance (a rod)
+// one row (ChooseRodGroups). Other distance constraints, pulley and path
 // constraints, and six-DOF constraints with neither shortcut, have no group:
 // all their rows are solved by Gauss-Seidel around the exact solve
 // (SolvedWhole). A group of fewer than three rows is padded to
@@ -47,6 +48,7 @@ enum class ExactRows : std::uint8_t {
   kSliderAxes,     // 2 rows: body 2's anchor on body 1's slider line
   kGear,           // 1 row:  theta1 + r theta2 = 0
   kRackAndPinion,  // 1 row:  theta1 - r d2 = 0
+  kDistance,       // 1 row:  |p2 - p1| = the rod's length (a rigid distance)
 };
 int ExactRowCount(ExactRows rows);
 // Whether the group's rows on body 1 (side 0) or body 2 (side 1) have a
@@ -78,9 +80,10 @@ struct ExactSolvePlan {
   bool hard_limits = false;
 
   // Whether a constraint has no row group, so that the exact solve leaves
-  // all its rows to Gauss-Seidel (distance, pulley, path, and six-DOF
-  // without an all-fixed shortcut): their rows are inequalities (a rope, a
-  // strut, a pulley's length range) or soft (springs), or their locked axes
+  // all its rows to Gauss-Seidel (pulley, path, distance but a rod with a
+  // group, and six-DOF without an all-fixed shortcut): their rows are
+  // inequalities (a rope, a strut, a pulley's length range) or soft
+  // (springs), or their locked axes
   // change with the free ones (a six-DOF's fixed axes beside free ones, a
   // path), which the solve's fixed groups do not model.
   static bool SolvedWhole(const ConstraintPlan& constraint);
@@ -123,6 +126,15 @@ struct ExactSolvePlan {
   bool only_points() const;  // every group a point group (the chains)
   std::size_t fill_blocks() const;  // blocks that are fill, not couplings
 };
+
+// Which rigid distance constraints (ConstraintPlan::rod) have a row group:
+// those with a dynamic body with all six DOFs whose two bodies (static and
+// kinematic ones counting as one fixed frame) no other constraint with row
+// groups, and no earlier rod with one, joins. The others are solved whole,
+// as before rods had groups: a rod beside a joint between the same bodies
+// could be dependent on it (K singular), and a rod on restricted bodies
+// would make the scene one the exact solve refuses. Sets rod_group.
+void ChooseRodGroups(const Scene& scene, StepPlan& plan);
 
 // Plans the exact solve of a scene CompilePlan has laid out as `plan`; a
 // scene it cannot solve gets `unavailable` (not an exception). Storage grows

@@ -22,6 +22,11 @@
 //     C = theta1 + r theta2       J = [0, a, 0, r b]
 //   rack and pinion  a = R1 hinge_local, b = R2 slider_local
 //     C = theta1 - r d2           J = [0, a, -r b, 0]
+//   distance (a rod of length l)  n = u / |u|, the stored normal where u = 0
+//     C = |u| - l                 J = [-n, -((r1 + u) x n), n, r2 x n]
+//     ((r1 + u) x n and r1 x n have the same component along n: the
+//     Gauss-Seidel row's lever arms; the stored normal is the last
+//     Gauss-Seidel setup's, initially +Y, as the exact solve keeps it)
 //
 // theta are the helper hinges' unwrapped angles and d2 the helper slider's
 // position, as the Gauss-Seidel position steps read them; without helpers
@@ -218,6 +223,18 @@ HWY_INLINE GroupRows RowsOfChunk(const StepPlan& plan, const ConstraintBlock& c,
         rows.error.x = hn::MulAdd(ratio, HelperAngle(plan, c, c.plan.helper2, c.plan.body2, offset),
                                   HelperAngle(plan, c, c.plan.helper1, c.plan.body1, offset));
       }
+      break;
+    }
+    case ExactRows::kDistance: {
+      const auto& s = c.Main<DistanceConstraintLanes>();
+      const AnchorLeverArms arms = AnchorLeverArmsOfChunk(c.bodies, s.anchors, offset);
+      const LaneVec length = hn::Sqrt(LengthSquared(arms.separation));
+      const Vec3 n = DirectionOrPrevious(arms.separation, length, LoadVec3(s.normal, offset));
+      SetRow(rows.linear[0], 0, Neg(n));
+      SetRow(rows.angular[0], 0, Neg(Cross(arms.r1_plus_u, n)));
+      SetRow(rows.linear[1], 0, n);
+      SetRow(rows.angular[1], 0, Cross(arms.r2, n));
+      rows.error.x = hn::Sub(length, Load(c.Limit<LinearLimitLanes>().min, offset));
       break;
     }
     case ExactRows::kRackAndPinion: {

@@ -596,6 +596,7 @@ StepPlan CompilePlan(const Scene& scene) {
             c.limit_offset = layout.Add<LinearLimitLanes>();
             c.soft_limits = s.limits_spring.HasStiffness();
             c.limit_spring_mode = s.limits_spring.mode;
+            c.rod = s.rigid();
           } else if constexpr (std::is_same_v<S, SwingTwistConstraintSettings>) {
             CheckFinite(what, "point1", s.point1);
             CheckFinite(what, "point2", s.point2);
@@ -749,6 +750,7 @@ StepPlan CompilePlan(const Scene& scene) {
 
   plan.block_bytes = layout.bytes();
   ListVelocityPassArrays(plan);
+  ChooseRodGroups(scene, plan);
   plan.exact = PlanExactSolve(scene, plan);
   return plan;
 }

@@ -90,6 +90,12 @@ struct ConstraintPlan {
   DriveKind drive = DriveKind::kNone;
   SpringMode motor_spring_mode = SpringMode::kFrequencyAndDamping;
   bool soft_limits = false;  // limit springs (no position-phase limit steps)
+  // Distance: a rigid rod (DistanceConstraintSettings::rigid), and whether
+  // the exact solve factors its row (a rod between two bodies that another
+  // constraint with row groups already joins is solved whole instead: their
+  // rows could be dependent; ExactSolvePlan::SolvedWhole).
+  bool rod = false;
+  bool rod_group = false;
   SpringMode limit_spring_mode = SpringMode::kFrequencyAndDamping;
   // Gear: the hinges of body 1 and 2; rack-and-pinion: hinge and slider.
   // Position correction runs only when both are given.

@@ -107,7 +107,8 @@ void BindParameters(py::class_<Batch>& cls) {
   DefOneFloat(cls, "set_gravity_factor", &Batch::SetGravityFactor, "body", "factor",
               "Gravity factor of a body per world.");
   DefTwoFloats(cls, "set_limits", &Batch::SetLimits, "constraint", "min", "max",
-               "Limits of a hinge (rad), slider (m) or distance (m) constraint per world.");
+               "Limits of a hinge (rad), slider (m) or distance (m) constraint per world "
+               "(a rigid distance stays a rod: min == max).");
   DefTwoFloats(cls, "set_limits_spring", &Batch::SetLimitsSpring, "constraint",
                "frequency_or_stiffness", "damping",
                "The limits spring per world (soft limits stay soft, hard stay hard).");

@@ -58,6 +58,7 @@ class DistanceConstraint {
     }
     limits_spring_ = ToReferenceSpring<T>(settings.limits_spring);
     hard_limits_ = settings.limits_spring.frequency_or_stiffness <= 0.0f;
+    rigid_ = settings.rigid();
   }
 
   std::size_t body1() const { return body1_; }
@@ -93,6 +94,15 @@ class DistanceConstraint {
 
   const AxisPart<T>& axis_part() const { return axis_; }
   const Vec3<T>& normal() const { return normal_; }
+
+  // The exact solve's view (reference/world.h): a rod whose row it factors
+  // (chosen by the world as the batch's plan does, ChooseRodGroups), its
+  // anchors (body space).
+  bool rigid() const { return rigid_; }
+  bool exact_group() const { return exact_group_; }
+  void set_exact_group(bool group) { exact_group_ = group; }
+  const Vec3<T>& local_point1() const { return local_point1_; }
+  const Vec3<T>& local_point2() const { return local_point2_; }
 
   // Solver state (reference/solver_state.h), in the batch's order
   // (docs/stepping.md, "Solver state of one world").
@@ -147,6 +157,7 @@ class DistanceConstraint {
   T min_ = T(0), max_ = T(0);
   SpringSettings<T> limits_spring_;
   bool hard_limits_ = true;
+  bool rigid_ = false, exact_group_ = false;
   Vec3<T> normal_ = Vec3<T>::UnitY();  // saved state (spec 4.4)
   Vec3<T> world_point1_ = Vec3<T>::Zero(), world_point2_ = Vec3<T>::Zero();
   T min_lambda_ = T(0), max_lambda_ = T(0);

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "reference/body.h"
+#include "reference/distance_constraint.h"
 #include "reference/fixed_constraint.h"
 #include "reference/gear_constraint.h"
 #include "reference/hinge_constraint.h"
@@ -87,20 +88,48 @@ ExactRowGroup<T> RotationRows(std::size_t b1, std::size_t b2, const std::vector<
   return group;
 }
 
+// The lever arms of a row between a constraint's two anchors (body space
+// local_point1/2): r2, r1 + u = x2 + r2 - x1 (body 1's arm reaching body 2's
+// anchor) and u = p2 - p1.
+template <class T>
+struct AnchorArms {
+  Vec3<T> r2, r1_plus_u, u;
+};
+template <class T, class C>
+AnchorArms<T> AnchorArmsOf(const C& c, const std::vector<Body<T>>& bodies) {
+  const Body<T>& body1 = bodies[c.body1()];
+  const Body<T>& body2 = bodies[c.body2()];
+  AnchorArms<T> arms;
+  arms.r2 = body2.rotation * c.local_point2();
+  arms.r1_plus_u = body2.position + arms.r2 - body1.position;
+  arms.u = arms.r1_plus_u - body1.rotation * c.local_point1();
+  return arms;
+}
+
 // C_i = u . n_i:  J_i = [-n_i, -((r1 + u) x n_i), n_i, r2 x n_i].
 template <class T>
 ExactRowGroup<T> SliderAxesRows(const SliderConstraint<T>& slider,
                                 const std::vector<Body<T>>& bodies) {
-  const Body<T>& body1 = bodies[slider.body1()];
-  const Body<T>& body2 = bodies[slider.body2()];
-  const Vec3<T> r2 = body2.rotation * slider.local_point2();
-  const Vec3<T> r1_plus_u = body2.position + r2 - body1.position;
-  const Vec3<T> u = r1_plus_u - body1.rotation * slider.local_point1();
+  const AnchorArms<T> arms = AnchorArmsOf(slider, bodies);
   ExactRowGroup<T> group{slider.body1(), slider.body2(), {}};
   for (const Vec3<T>& local : {slider.local_normal1(), slider.local_normal2()}) {
-    const Vec3<T> n = body1.rotation * local;
-    group.rows.push_back({-n, -r1_plus_u.cross(n), n, r2.cross(n), u.dot(n)});
+    const Vec3<T> n = bodies[slider.body1()].rotation * local;
+    group.rows.push_back({-n, -arms.r1_plus_u.cross(n), n, arms.r2.cross(n), arms.u.dot(n)});
   }
+  return group;
+}
+
+// C = |u| - l with n = u / |u| (the stored normal where u = 0):
+// J = [-n, -((r1 + u) x n), n, r2 x n].
+template <class T>
+ExactRowGroup<T> DistanceRows(const DistanceConstraint<T>& rod,
+                              const std::vector<Body<T>>& bodies) {
+  const AnchorArms<T> arms = AnchorArmsOf(rod, bodies);
+  const T length = arms.u.norm();
+  const Vec3<T> n = length > T(0) ? Vec3<T>(arms.u / length) : rod.normal();
+  ExactRowGroup<T> group{rod.body1(), rod.body2(), {}};
+  group.rows.push_back(
+      {-n, -arms.r1_plus_u.cross(n), n, arms.r2.cross(n), length - rod.min_distance()});
   return group;
 }
 

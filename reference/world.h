@@ -422,6 +422,8 @@ class World {
   static bool IsSolvedWhole(const Type& c) {
     if constexpr (std::is_same_v<Type, SixDofConstraint<T>>) {
       return !c.HasExactGroups();
+    } else if constexpr (std::is_same_v<Type, DistanceConstraint<T>>) {
+      return !c.exact_group();
     } else {
       return kMaySolveWhole<Type>;
     }
@@ -480,6 +482,38 @@ class World {
                               stiffness);
   }
 
+  // The rods whose row the exact solve factors, as the batch's plan chooses
+  // them (batch/exact_plan.h, ChooseRodGroups): a dynamic body with all six
+  // DOFs, and a pair of bodies (non-dynamic ones one fixed frame) that no
+  // constraint with groups and no earlier rod with one joins.
+  void ChooseRodGroups() {
+    const std::size_t fixed_frame = bodies_.size();
+    const auto end = [&](std::size_t b) { return bodies_[b].IsDynamic() ? b : fixed_frame; };
+    const auto free = [&](std::size_t b) {
+      return bodies_[b].IsDynamic() && bodies_[b].translation_mask == Vec3<T>::Ones() &&
+             bodies_[b].rotation_mask == Vec3<T>::Ones();
+    };
+    std::set<std::pair<std::size_t, std::size_t>> joined;
+    for (const Constraint& constraint : constraints_) {
+      std::visit(
+          [&](const auto& c) {
+            using Type = std::decay_t<decltype(c)>;
+            if constexpr (!std::is_same_v<Type, DistanceConstraint<T>>) {
+              if (!IsSolvedWhole(c)) joined.insert(std::minmax(end(c.body1()), end(c.body2())));
+            }
+          },
+          constraint);
+    }
+    for (Constraint& constraint : constraints_) {
+      auto* rod = std::get_if<DistanceConstraint<T>>(&constraint);
+      if (rod == nullptr || !rod->rigid() || (!free(rod->body1()) && !free(rod->body2()))) {
+        continue;
+      }
+      rod->set_exact_group(
+          joined.insert(std::minmax(end(rod->body1()), end(rod->body2()))).second);
+    }
+  }
+
   // Every solved constraint's row groups at the current poses, in scene order.
   std::vector<ExactRowGroup<T>> ExactRowGroups() const {
     std::vector<ExactRowGroup<T>> groups;
@@ -503,6 +537,8 @@ class World {
             } else if constexpr (std::is_same_v<Type, SliderConstraint<T>>) {
               groups.push_back(SliderAxesRows(c, bodies_));
               groups.push_back(RotationRows(c.body1(), c.body2(), bodies_, c.inv_initial_orientation()));
+            } else if constexpr (std::is_same_v<Type, DistanceConstraint<T>>) {
+              if (c.exact_group()) groups.push_back(DistanceRows(c, bodies_));
             } else if constexpr (std::is_same_v<Type, SixDofConstraint<T>>) {
               if (c.translation_point()) {
                 groups.push_back(PointRows(c.body1(), c.body2(), bodies_, c.fixed_point1(), c.local_point2()));
@@ -767,6 +803,7 @@ World<T>::World(const Scene& scene) {
         constraints[index]));
   }
   for (std::size_t index = 0; index < constraints_.size(); ++index) CheckHelpers(index);
+  ChooseRodGroups();
   MakeContacts(scene);
 }
 

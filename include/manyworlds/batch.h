@@ -81,11 +81,11 @@ enum class JointSolver : std::uint8_t {
   // Each substep solves all equality rows of a world at once, exactly (a
   // block-sparse LDL^T of J M^-1 J^T whose elimination order and fill the
   // plan fixes; ball, hinge, fixed, slider, gear, rack-and-pinion and
-  // swing-twist joints, the cone's anchor and a six-DOF's all-fixed
-  // translation or rotation), with motors, friction, limits, the cone's
-  // row, a six-DOF's other rows and the constraints solved whole (distance,
-  // pulley, path, six-DOF without an all-fixed part) by block Gauss-Seidel
-  // around it
+  // swing-twist joints, the cone's anchor, a six-DOF's all-fixed
+  // translation or rotation, rigid distance constraints), with motors,
+  // friction, limits, the cone's row, a six-DOF's other rows and the
+  // constraints solved whole (ropes, struts and springs, pulley, path,
+  // six-DOF without an all-fixed part) by block Gauss-Seidel around it
   // (velocity_iterations passes). Then, in a scene whose joints are all
   // equalities, the velocities take the normal component the joints'
   // curvature needs over the step (exact_curvature_velocity), and Newton
@@ -162,8 +162,8 @@ struct StepSettings {
   // chains hold with fewer Newton steps; 0 is off.
   float exact_geometric_stiffness = 1.0f;
   // kExact, in scenes whose constraints all have only equality rows (no
-  // motor, friction, limit, cone, spring, rope, path, no six-DOF beyond its
-  // all-fixed parts, no contact): after the integration, add to the velocities the normal
+  // motor, friction, limit, cone, spring, rope, strut, path, no six-DOF
+  // beyond its all-fixed parts, no rod solved whole, no contact): after the integration, add to the velocities the normal
   // velocity the joints' curvature needs over the step, SHAKE's first chord
   // step with the velocity solve's J and factors of K (weighted by
   // kExactCurvatureTransverseLimit). Without it the next velocity solve
@@ -490,6 +490,9 @@ class Batch {
                          Float3 inertia_diagonal);
   void SetDamping(std::size_t world, std::size_t body, float linear, float angular);
   void SetGravityFactor(std::size_t world, std::size_t body, float factor);
+  // Limits of a hinge, slider or distance constraint; a rigid distance
+  // (DistanceConstraintSettings::rigid) takes min == max only (it stays a
+  // rod; the exact solve factors its row).
   void SetLimits(std::size_t world, std::size_t constraint, float min, float max);
   void SetLimitsSpring(std::size_t world, std::size_t constraint, float frequency_or_stiffness,
                        float damping);

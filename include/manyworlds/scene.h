@@ -203,6 +203,16 @@ struct DistanceConstraintSettings {
   float min_distance = -1.0f;  // m
   float max_distance = -1.0f;  // m
   SpringSettings limits_spring;  // frequency_or_stiffness > 0: soft limits
+
+  // A rigid rod: both bounds negative (the initial distance) or given equal,
+  // and no limits spring. Its one row is an equality, which the exact joint
+  // solve factors (docs/stepping.md); Batch::SetLimits may change a rod's
+  // length per world but keeps it a rod.
+  bool rigid() const {
+    const bool both_initial = min_distance < 0.0f && max_distance < 0.0f;
+    return !limits_spring.HasStiffness() &&
+           (both_initial || (min_distance >= 0.0f && min_distance == max_distance));
+  }
 };
 
 // A rope from body 1's point over fixed_point1 and fixed_point2 (world
