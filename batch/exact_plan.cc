@@ -111,18 +111,30 @@ namespace {
 // The groups attached to each dynamic body, as (group, is body2).
 using Attachments = std::vector<std::vector<std::pair<std::size_t, bool>>>;
 
+// A dynamic body with all six DOFs (what a constraint with row groups needs
+// on one side).
+bool FreeBody(const Scene& scene, std::size_t body, MotionType motion) {
+  return motion == MotionType::kDynamic && scene.bodies()[body].allowed_dofs == AllowedDofs::kAll;
+}
+
+// The two ends of a constraint in the solve, ordered: its dynamic bodies,
+// with static and kinematic ones as one fixed frame (neither moves).
+std::pair<std::size_t, std::size_t> SolvedEnds(const StepPlan& plan, const ConstraintPlan& c) {
+  const std::size_t fixed_frame = plan.bodies.size();
+  const std::size_t a = c.motion1 == MotionType::kDynamic ? c.body1 : fixed_frame;
+  const std::size_t b = c.motion2 == MotionType::kDynamic ? c.body2 : fixed_frame;
+  return std::minmax(a, b);
+}
+
 std::string Unavailable(const Scene& scene, const StepPlan& plan) {
   // A body whose allowed DOFs lock some axes moves only along the others
   // (K counts its mass and inertia there only). A constraint with row groups
   // needs one dynamic body with all six: between a restricted body and a
   // fixed frame or another restricted body, rows along the locked axes (a
   // planar hinge's out-of-plane rows) move nothing, and K is singular.
-  const auto free = [&](std::size_t body, MotionType motion) {
-    return motion == MotionType::kDynamic && scene.bodies()[body].allowed_dofs == AllowedDofs::kAll;
-  };
   for (const ConstraintPlan& c : plan.constraints) {
-    if (ExactSolvePlan::SolvedWhole(c) || free(c.body1, c.motion1) ||
-        free(c.body2, c.motion2)) {
+    if (ExactSolvePlan::SolvedWhole(c) || FreeBody(scene, c.body1, c.motion1) ||
+        FreeBody(scene, c.body2, c.motion2)) {
       continue;
     }
     return c.label + " joins no dynamic body with all six degrees of freedom (" +
@@ -137,13 +149,10 @@ std::string Unavailable(const Scene& scene, const StepPlan& plan) {
   // nothing, so K is singular and float would factor it into arbitrary
   // impulses.
   std::map<std::pair<std::size_t, std::size_t>, std::size_t> joined;
-  const std::size_t kFixedFrame = plan.bodies.size();
   for (std::size_t i = 0; i < plan.constraints.size(); ++i) {
     const ConstraintPlan& c = plan.constraints[i];
     if (ExactSolvePlan::SolvedWhole(c)) continue;  // none of its rows is in K
-    const std::size_t a = c.motion1 == MotionType::kDynamic ? c.body1 : kFixedFrame;
-    const std::size_t b = c.motion2 == MotionType::kDynamic ? c.body2 : kFixedFrame;
-    const auto [it, first] = joined.emplace(std::minmax(a, b), i);
+    const auto [it, first] = joined.emplace(SolvedEnds(plan, c), i);
     if (!first) {
       const ConstraintPlan& other = plan.constraints[it->second];
       return other.label + " and " + c.label +
@@ -158,22 +167,15 @@ std::string Unavailable(const Scene& scene, const StepPlan& plan) {
 }  // namespace
 
 void ChooseRodGroups(const Scene& scene, StepPlan& plan) {
-  const std::size_t kFixedFrame = plan.bodies.size();
-  const auto end = [&](std::size_t body, MotionType motion) {
-    return motion == MotionType::kDynamic ? body : kFixedFrame;
-  };
-  const auto free = [&](std::size_t body, MotionType motion) {
-    return motion == MotionType::kDynamic && scene.bodies()[body].allowed_dofs == AllowedDofs::kAll;
-  };
   std::set<std::pair<std::size_t, std::size_t>> joined;
   for (const ConstraintPlan& c : plan.constraints) {
     if (c.type == ConstraintType::kDistance || ExactSolvePlan::SolvedWhole(c)) continue;
-    joined.insert(std::minmax(end(c.body1, c.motion1), end(c.body2, c.motion2)));
+    joined.insert(SolvedEnds(plan, c));
   }
   for (ConstraintPlan& c : plan.constraints) {
     if (c.type != ConstraintType::kDistance || !c.rod) continue;
-    if (!free(c.body1, c.motion1) && !free(c.body2, c.motion2)) continue;
-    c.rod_group = joined.insert(std::minmax(end(c.body1, c.motion1), end(c.body2, c.motion2))).second;
+    if (!FreeBody(scene, c.body1, c.motion1) && !FreeBody(scene, c.body2, c.motion2)) continue;
+    c.rod_group = joined.insert(SolvedEnds(plan, c)).second;
   }
 }
 

@@ -459,17 +459,12 @@ class World {
   ExactJointSolve<T> ExactSolve(T stiffness) {
     // A constraint with row groups needs a dynamic body with all six DOFs
     // (batch/exact_plan.cc).
-    const auto free = [&](std::size_t index) {
-      const Body<T>& body = bodies_[index];
-      return body.IsDynamic() && body.translation_mask == Vec3<T>::Ones() &&
-             body.rotation_mask == Vec3<T>::Ones();
-    };
     for (std::size_t index = 0; index < constraints_.size(); ++index) {
       if (!IsSolved(constraints_[index])) continue;
       std::visit(
           [&](const auto& c) {
             if (!IsSolvedWhole(c)) {
-              if (!free(c.body1()) && !free(c.body2())) {
+              if (!IsFreeBody(c.body1()) && !IsFreeBody(c.body2())) {
                 throw std::invalid_argument("reference::World: constraint " +
                                             std::to_string(index) +
                                             " joins no unrestricted dynamic body (exact solve)");
@@ -486,13 +481,13 @@ class World {
   // them (batch/exact_plan.h, ChooseRodGroups): a dynamic body with all six
   // DOFs, and a pair of bodies (non-dynamic ones one fixed frame) that no
   // constraint with groups and no earlier rod with one joins.
+  bool IsFreeBody(std::size_t b) const {
+    return bodies_[b].IsDynamic() && bodies_[b].translation_mask == Vec3<T>::Ones() &&
+           bodies_[b].rotation_mask == Vec3<T>::Ones();
+  }
   void ChooseRodGroups() {
     const std::size_t fixed_frame = bodies_.size();
     const auto end = [&](std::size_t b) { return bodies_[b].IsDynamic() ? b : fixed_frame; };
-    const auto free = [&](std::size_t b) {
-      return bodies_[b].IsDynamic() && bodies_[b].translation_mask == Vec3<T>::Ones() &&
-             bodies_[b].rotation_mask == Vec3<T>::Ones();
-    };
     std::set<std::pair<std::size_t, std::size_t>> joined;
     for (const Constraint& constraint : constraints_) {
       std::visit(
@@ -506,7 +501,8 @@ class World {
     }
     for (Constraint& constraint : constraints_) {
       auto* rod = std::get_if<DistanceConstraint<T>>(&constraint);
-      if (rod == nullptr || !rod->rigid() || (!free(rod->body1()) && !free(rod->body2()))) {
+      if (rod == nullptr || !rod->rigid() ||
+          (!IsFreeBody(rod->body1()) && !IsFreeBody(rod->body2()))) {
         continue;
       }
       rod->set_exact_group(
