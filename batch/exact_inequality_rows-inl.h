@@ -37,10 +37,10 @@
 // batch/swing_twist_constraint-inl.h, batch/cone_constraint-inl.h,
 // batch/six_dof_constraint-inl.h; the constraints solved whole call their
 // constraint's verbs), so the rows behave as
-// they do there; only their neighbours differ. A rigid distance or pulley,
-// or a six-DOF or path's locked axes, move the bodies in every position
-// pass (their error is never exactly zero), so a scene with them takes all
-// of the position phase's passes.
+// they do there; only their neighbours differ. A rod solved whole or a
+// rigid pulley, or a six-DOF or path's locked axes around the solve, move
+// the bodies in every position pass (their error is never exactly zero), so
+// a scene with them takes all of the position phase's passes.
 
 #if defined(MANYWORLDS_BATCH_EXACT_INEQUALITY_ROWS_INL_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef MANYWORLDS_BATCH_EXACT_INEQUALITY_ROWS_INL_H_

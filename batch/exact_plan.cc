@@ -198,9 +198,9 @@ ExactSolvePlan PlanExactSolve(const Scene& scene, const StepPlan& plan) {
   const std::size_t group_count = groups.size();
   for (std::size_t i = 0; i < plan.constraints.size(); ++i) {
     const ConstraintPlan& c = plan.constraints[i];
-    // Swing-twist limits, the cone row and the whole types always take
-    // position steps (a rigid distance or pulley, a six-DOF or path's locked
-    // axes).
+    // Swing-twist limits, the cone row and the constraints solved whole
+    // always take position steps (a rod solved whole or a rigid pulley, a
+    // six-DOF or path's locked axes).
     if (c.type == ConstraintType::kSwingTwist || c.type == ConstraintType::kCone ||
         ExactSolvePlan::SolvedWhole(c)) {
       exact.inequality.push_back(i);
