@@ -249,11 +249,13 @@ class ExactSolveTest : public ::testing::TestWithParam<std::tuple<std::string, s
 // hinges 0 1 0, fixed and slider 0 0 0 (the trust region's scaled steps
 // round alike); the swing-twist joint at its swing limit behaves like the
 // ragdoll's (batch 0 1297-2333 1.5e5-2.7e5, float reference 0 849-1018
-// 0.9e5-1.2e5). more_types (cone rows, distance rods, ropes, struts and a
-// spring, a pulley, swing-twist, six-DOF and path joints around the solve)
-// too: its limits, ropes and cones switch on and off at thresholds (batch
-// 421-1800 10071-12621 1.4e6-2.0e6, float reference 615-778 5301-16238
-// 0.9e6-2.2e6); skipping the cone rows' velocity step there gives 96775
+// 0.9e5-1.2e5). more_types (its rod and two six-DOF anchors as groups; cone
+// rows, ropes, struts and a spring, a pulley, swing-twist, six-DOF and path
+// rows around the solve) too: its limits, ropes and cones switch on and off
+// at thresholds (batch 421-1800 10071-12621 1.4e6-2.0e6, float reference
+// 615-778 5301-16238 0.9e6-2.2e6; with the rod and six-DOF groups, batch
+// 476-1000 4928-5003 0.7e6-1.3e6, float reference 512-749 3913-5984
+// 0.7e6-1.1e6); skipping the cone rows' velocity step there gives 96775
 // 225446 3.3e7. spring-0.5 1 1 7 and singular-cone 0 4 0, as the float
 // reference. The six-DOF groups: welded 1 1 164-190 (float reference 1 1
 // 153-174), slide 65 1-4 1 (65 4 2); with the weld's anchor not moved by
