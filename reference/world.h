@@ -413,7 +413,8 @@ class World {
 
   // The constraints the exact solve leaves whole to Gauss-Seidel
   // (ExactSolvePlan::SolvedWhole): none of their rows is in K. A six-DOF
-  // constraint is solved whole without an all-fixed shortcut.
+  // constraint is solved whole without an all-fixed shortcut, a distance
+  // constraint unless it is a rod with a group (ChooseRodGroups).
   template <class Type>
   static constexpr bool kMaySolveWhole =
       std::is_same_v<Type, DistanceConstraint<T>> || std::is_same_v<Type, PulleyConstraint<T>> ||
@@ -450,12 +451,14 @@ class World {
 
   // JointSolver::kExact (reference/exact_solve.h): the equality rows of
   // point, hinge, fixed, slider, gear, rack-and-pinion, swing-twist and cone
-  // constraints and the six-DOF constraints' all-fixed shortcuts; the hinges'
-  // and sliders' motors, friction and limits, the swing-twist limits and
-  // drives, the cone rows, the six-DOF constraints' other rows and every row
-  // of the distance, pulley and path constraints (and of six-DOF constraints
-  // without a shortcut) by Gauss-Seidel around them; every constraint with row groups on at least one dynamic body with
-  // all six degrees of freedom (what the batch's plan takes).
+  // constraints, the rods with a group and the six-DOF constraints'
+  // all-fixed shortcuts; the hinges' and sliders' motors, friction and
+  // limits, the swing-twist limits and drives, the cone rows, the six-DOF
+  // constraints' other rows and every row of the other distance
+  // constraints, the pulley and path constraints (and of six-DOF constraints
+  // without a shortcut) by Gauss-Seidel around them; every constraint with
+  // row groups on at least one dynamic body with all six degrees of freedom
+  // (what the batch's plan takes).
   ExactJointSolve<T> ExactSolve(T stiffness) {
     // A constraint with row groups needs a dynamic body with all six DOFs
     // (batch/exact_plan.cc).
@@ -463,12 +466,10 @@ class World {
       if (!IsSolved(constraints_[index])) continue;
       std::visit(
           [&](const auto& c) {
-            if (!IsSolvedWhole(c)) {
-              if (!IsFreeBody(c.body1()) && !IsFreeBody(c.body2())) {
-                throw std::invalid_argument("reference::World: constraint " +
-                                            std::to_string(index) +
-                                            " joins no unrestricted dynamic body (exact solve)");
-              }
+            if (!IsSolvedWhole(c) && !IsFreeBody(c.body1()) && !IsFreeBody(c.body2())) {
+              throw std::invalid_argument("reference::World: constraint " +
+                                          std::to_string(index) +
+                                          " joins no unrestricted dynamic body (exact solve)");
             }
           },
           constraints_[index]);
@@ -477,14 +478,17 @@ class World {
                               stiffness);
   }
 
-  // The rods whose row the exact solve factors, as the batch's plan chooses
-  // them (batch/exact_plan.h, ChooseRodGroups): a dynamic body with all six
-  // DOFs, and a pair of bodies (non-dynamic ones one fixed frame) that no
-  // constraint with groups and no earlier rod with one joins.
+  // A dynamic body with all six DOFs (what a constraint with row groups
+  // needs on one side).
   bool IsFreeBody(std::size_t b) const {
     return bodies_[b].IsDynamic() && bodies_[b].translation_mask == Vec3<T>::Ones() &&
            bodies_[b].rotation_mask == Vec3<T>::Ones();
   }
+
+  // The rods whose row the exact solve factors, as the batch's plan chooses
+  // them (batch/exact_plan.h, ChooseRodGroups): a free body on one side, and
+  // a pair of bodies (non-dynamic ones one fixed frame) that no constraint
+  // with groups and no earlier rod with one joins.
   void ChooseRodGroups() {
     const std::size_t fixed_frame = bodies_.size();
     const auto end = [&](std::size_t b) { return bodies_[b].IsDynamic() ? b : fixed_frame; };
@@ -670,10 +674,10 @@ class World {
                   }
                 }
                 if constexpr (std::is_same_v<Type, HingeConstraint<T>> ||
-                                     std::is_same_v<Type, SliderConstraint<T>> ||
-                                     std::is_same_v<Type, SwingTwistConstraint<T>> ||
-                                     std::is_same_v<Type, ConeConstraint<T>> ||
-                                     std::is_same_v<Type, SixDofConstraint<T>>) {
+                              std::is_same_v<Type, SliderConstraint<T>> ||
+                              std::is_same_v<Type, SwingTwistConstraint<T>> ||
+                              std::is_same_v<Type, ConeConstraint<T>> ||
+                              std::is_same_v<Type, SixDofConstraint<T>>) {
                   any |= action(c, bodies_[c.body1()], bodies_[c.body2()]);
                 }
               },

@@ -163,8 +163,9 @@ struct StepSettings {
   float exact_geometric_stiffness = 1.0f;
   // kExact, in scenes whose constraints all have only equality rows (no
   // motor, friction, limit, cone, spring, rope, strut, path, no six-DOF
-  // beyond its all-fixed parts, no rod solved whole, no contact): after the integration, add to the velocities the normal
-  // velocity the joints' curvature needs over the step, SHAKE's first chord
+  // beyond its all-fixed parts, no rod solved whole, no contact): after the
+  // integration, add to the velocities the normal velocity the joints'
+  // curvature needs over the step, SHAKE's first chord
   // step with the velocity solve's J and factors of K (weighted by
   // kExactCurvatureTransverseLimit). Without it the next velocity solve
   // removes that component, which loses energy at first order in dt:
