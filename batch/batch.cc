@@ -20,6 +20,7 @@
 #include "batch/constraint_block.h"
 #include "batch/constraint_error.h"
 #include "batch/scene_setup.h"
+#include "batch/working_block.h"
 #include "hwy/targets.h"
 #include "manyworlds/error.h"
 
@@ -200,10 +201,11 @@ void Batch::Impl::Step(const StepSettings& settings, std::stop_token stop, const
 
 bool Batch::Impl::StepBlock(std::size_t block, const std::byte* next_block,
                             const StepParams& params) {
-  if (!profile_phases_) return kernels_->step_block(plan_, Block(block), next_block, params);
+  const WorkingBlock working(plan_, Block(block));
+  if (!profile_phases_) return kernels_->step_block(plan_, working.bytes(), next_block, params);
   std::uint64_t phase_ns[kStepPhaseCount] = {};
   const bool unhealthy =
-      kernels_->step_block_profiled(plan_, Block(block), next_block, params, phase_ns);
+      kernels_->step_block_profiled(plan_, working.bytes(), next_block, params, phase_ns);
   for (std::size_t p = 0; p < kStepPhaseCount; ++p) {
     phase_ns_[p].fetch_add(phase_ns[p], std::memory_order_relaxed);
   }

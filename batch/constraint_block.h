@@ -31,6 +31,9 @@ struct ConstraintBlock {
 
   template <class Lanes>
   Lanes& Main() const { return At<Lanes>(block, plan.offset); }
+  // The type's ...Scratch struct: only inside a working block (a step).
+  template <class Lanes>
+  Lanes& Scratch() const { return At<Lanes>(block, plan.scratch_offset); }
   template <class Lanes>
   Lanes& Limit() const { return At<Lanes>(block, plan.limit_offset); }
   template <class Lanes>

@@ -6,6 +6,15 @@
 // Everything is made of LaneArrays (16 floats, 64-byte aligned), so a block is
 // a plain sequence of LaneArrays: resetting, copying or hashing one world is
 // the same loop over lane `i` of every array, whatever the constraint.
+//
+// A type whose lanes come in two structs keeps in the first (in the block)
+// what survives a step: parameters, accumulated impulses, turn counts. The
+// second, "...Scratch", holds what its setup recomputes at every substep
+// (this step's axes and lever arms, the parts' Jacobians and effective
+// masses) and lives in one scratch block per thread, reused block after
+// block (StepPlan::scratch_bytes). Its parts' accumulated impulses are homed
+// in the first struct and carried into the scratch around each block's step
+// (CarryState, StepPlan::carried).
 #pragma once
 
 #include "kernels/angle.h"
@@ -26,26 +35,40 @@ namespace manyworlds {
 // ---- Point: one point part.
 struct PointConstraintLanes {
   PointGeometry anchors;  // body-space anchors (parameters)
+  PointLanes::Persistent point_state;
+};
+struct PointConstraintScratch {
   PointLanes point;
 };
+template <class Carry>
+void CarryState(PointConstraintLanes& s, PointConstraintScratch& t, Carry&& carry) {
+  carry(s.point_state, t.point.persistent);
+}
 
 // ---- Fixed: rotation Euler, then point.
 struct FixedConstraintLanes {
   PointGeometry anchors;
   QuatLanes inv_initial_orientation;  // r0^-1 (parameter)
+  RotationEulerLanes::Persistent rotation_state;
+  PointLanes::Persistent point_state;
+};
+struct FixedConstraintScratch {
   RotationEulerLanes rotation;
   PointLanes point;
 };
+template <class Carry>
+void CarryState(FixedConstraintLanes& s, FixedConstraintScratch& t, Carry&& carry) {
+  carry(s.rotation_state, t.rotation.persistent);
+  carry(s.point_state, t.point.persistent);
+}
 
 // ---- Hinge: [motor angle] -> point -> hinge rotation -> [limit angle].
 struct HingeConstraintLanes {
   PointGeometry anchors;
   Vec3Lanes hinge_axis1_local, hinge_axis2_local;  // unit, body space
   QuatLanes inv_initial_orientation;  // r0^-1 from the normal/hinge frames
-  HingeRotationGeometry rotation_geometry;  // world hinge axes of this step
-  PointLanes point;
-  HingeRotationLanes rotation;
-  LaneArray angle;  // theta at setup (rad, (-pi, pi])
+  PointLanes::Persistent point_state;
+  HingeRotationLanes::Persistent rotation_state;
   // Turn counting for the unwrapped angle theta + 2 pi turns (joint
   // coordinates; the gear and rack-and-pinion position steps): theta at the
   // last setup, and the whole turns made since the scene's pose (a float
@@ -55,6 +78,17 @@ struct HingeConstraintLanes {
   LaneArray turn_reference_angle;
   LaneArray turns;
 };
+struct HingeConstraintScratch {
+  HingeRotationGeometry rotation_geometry;  // world hinge axes of this step
+  PointLanes point;
+  HingeRotationLanes rotation;
+  LaneArray angle;  // theta at setup (rad, (-pi, pi])
+};
+template <class Carry>
+void CarryState(HingeConstraintLanes& s, HingeConstraintScratch& t, Carry&& carry) {
+  carry(s.point_state, t.point.persistent);
+  carry(s.rotation_state, t.rotation.persistent);
+}
 
 // Motor or friction row of a hinge (angle part) or slider (axis part).
 // geometry.spring holds the per-world motor spring.
@@ -90,6 +124,10 @@ struct SliderConstraintLanes {
   PointGeometry anchors;
   Vec3Lanes slider_axis1_local, normal_axis1_local, binormal_axis1_local;  // body 1 space
   QuatLanes inv_initial_orientation;
+  DualAxisLanes::Persistent dual_state;
+  RotationEulerLanes::Persistent rotation_state;
+};
+struct SliderConstraintScratch {
   DualAxisGeometry dual_geometry;  // lever arms and normals of this step
   Vec3Lanes separation;            // u = p2 - p1 of this step
   Vec3Lanes slider_axis;           // world slider axis of this step
@@ -97,6 +135,11 @@ struct SliderConstraintLanes {
   RotationEulerLanes rotation;
   LaneArray position;  // d = u . slider axis at setup (m)
 };
+template <class Carry>
+void CarryState(SliderConstraintLanes& s, SliderConstraintScratch& t, Carry&& carry) {
+  carry(s.dual_state, t.dual.persistent);
+  carry(s.rotation_state, t.rotation.persistent);
+}
 
 // ---- Gear: one gear part; position correction through the two hinges.
 struct GearConstraintLanes {

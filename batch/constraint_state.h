@@ -64,20 +64,20 @@ void VisitConstraintState(const ConstraintBlock& c, Visit&& visit) {
   switch (c.plan.type) {
     case ConstraintType::kPoint: {
       auto& s = c.Main<PointConstraintLanes>();
-      three(s.point.persistent.total_lambda, "point impulse");
+      three(s.point_state.total_lambda, "point impulse");
       return;
     }
     case ConstraintType::kFixed: {
       auto& s = c.Main<FixedConstraintLanes>();
-      three(s.rotation.persistent.total_lambda, "rotation impulse");
-      three(s.point.persistent.total_lambda, "point impulse");
+      three(s.rotation_state.total_lambda, "rotation impulse");
+      three(s.point_state.total_lambda, "point impulse");
       return;
     }
     case ConstraintType::kHinge: {
       auto& s = c.Main<HingeConstraintLanes>();
       one(angular_motor(), "motor impulse");
-      three(s.point.persistent.total_lambda, "point impulse");
-      two(s.rotation.persistent.total_lambda, "hinge rotation impulse");
+      three(s.point_state.total_lambda, "point impulse");
+      two(s.rotation_state.total_lambda, "hinge rotation impulse");
       one(angular_limit(), "limit impulse");
       one(&s.turn_reference_angle, "turn reference angle");
       one(&s.turns, "turns");
@@ -86,8 +86,8 @@ void VisitConstraintState(const ConstraintBlock& c, Visit&& visit) {
     case ConstraintType::kSlider: {
       auto& s = c.Main<SliderConstraintLanes>();
       one(linear_motor(0), "motor impulse");
-      two(s.dual.persistent.total_lambda, "dual axis impulse");
-      three(s.rotation.persistent.total_lambda, "rotation impulse");
+      two(s.dual_state.total_lambda, "dual axis impulse");
+      three(s.rotation_state.total_lambda, "rotation impulse");
       one(linear_limit(0), "limit impulse");
       return;
     }
@@ -142,6 +142,30 @@ void VisitConstraintState(const ConstraintBlock& c, Visit&& visit) {
       three(s.rotation.persistent.total_lambda, "rotation impulse");
       return;
     }
+  }
+}
+
+// Calls carry(home, scratch) for every accumulated impulse of a constraint
+// whose parts live in the scratch (constraint_lanes.h, CarryState): its home
+// in the stored block and the part's Persistent struct it is used from
+// during a step; nothing for a type without a scratch struct.
+template <class Carry>
+void VisitCarriedState(const ConstraintBlock& c, Carry&& carry) {
+  switch (c.plan.type) {
+    case ConstraintType::kPoint:
+      CarryState(c.Main<PointConstraintLanes>(), c.Scratch<PointConstraintScratch>(), carry);
+      return;
+    case ConstraintType::kFixed:
+      CarryState(c.Main<FixedConstraintLanes>(), c.Scratch<FixedConstraintScratch>(), carry);
+      return;
+    case ConstraintType::kHinge:
+      CarryState(c.Main<HingeConstraintLanes>(), c.Scratch<HingeConstraintScratch>(), carry);
+      return;
+    case ConstraintType::kSlider:
+      CarryState(c.Main<SliderConstraintLanes>(), c.Scratch<SliderConstraintScratch>(), carry);
+      return;
+    default:
+      return;
   }
 }
 

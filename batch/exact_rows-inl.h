@@ -111,11 +111,11 @@ HWY_INLINE const PointGeometry& PointAnchors(const ConstraintBlock& c) {
 HWY_INLINE PointLanes& PointPart(const ConstraintBlock& c) {
   switch (c.plan.type) {
     case ConstraintType::kSixDof: return c.Main<SixDofConstraintLanes>().point;
-    case ConstraintType::kHinge: return c.Main<HingeConstraintLanes>().point;
-    case ConstraintType::kFixed: return c.Main<FixedConstraintLanes>().point;
+    case ConstraintType::kHinge: return c.Scratch<HingeConstraintScratch>().point;
+    case ConstraintType::kFixed: return c.Scratch<FixedConstraintScratch>().point;
     case ConstraintType::kSwingTwist: return c.Main<SwingTwistConstraintLanes>().point;
     case ConstraintType::kCone: return c.Main<ConeConstraintLanes>().point;
-    default: return c.Main<PointConstraintLanes>().point;
+    default: return c.Scratch<PointConstraintScratch>().point;
   }
 }
 
@@ -266,7 +266,7 @@ inline void HingeTurns(const StepPlan& plan, std::byte* block) {
     if (plan.constraints[i].type != ConstraintType::kHinge) continue;
     const ConstraintBlock c = ConstraintInBlock(plan, i, block);
     HingeAxesAndAngle(c, true);
-    HingeCountTurns(c.Main<HingeConstraintLanes>());
+    HingeCountTurns(c.Main<HingeConstraintLanes>(), c.Scratch<HingeConstraintScratch>());
   }
 }
 

@@ -23,29 +23,30 @@ namespace manyworlds {
 namespace HWY_NAMESPACE {
 
 inline void FixedConstraintSetup(const ConstraintBlock& c, const StepScalars&) {
-  auto& s = c.Main<FixedConstraintLanes>();
-  RotationEulerCalculateProperties(c.bodies, s.rotation);
-  PointCalculateProperties(c.bodies, s.anchors, s.point);
+  auto& t = c.Scratch<FixedConstraintScratch>();
+  RotationEulerCalculateProperties(c.bodies, t.rotation);
+  PointCalculateProperties(c.bodies, c.Main<FixedConstraintLanes>().anchors, t.point);
 }
 
 inline void FixedConstraintWarmStart(const ConstraintBlock& c, const StepScalars& step) {
-  auto& s = c.Main<FixedConstraintLanes>();
-  RotationEulerWarmStart(c.bodies, s.rotation, step.warm_start_ratio);
-  PointWarmStart(c.bodies, s.point, step.warm_start_ratio);
+  auto& t = c.Scratch<FixedConstraintScratch>();
+  RotationEulerWarmStart(c.bodies, t.rotation, step.warm_start_ratio);
+  PointWarmStart(c.bodies, t.point, step.warm_start_ratio);
 }
 
 inline bool FixedConstraintSolveVelocity(const ConstraintBlock& c) {
-  auto& s = c.Main<FixedConstraintLanes>();
-  bool applied = RotationEulerSolveVelocity(c.bodies, s.rotation);
-  applied |= PointSolveVelocity(c.bodies, s.point);
+  auto& t = c.Scratch<FixedConstraintScratch>();
+  bool applied = RotationEulerSolveVelocity(c.bodies, t.rotation);
+  applied |= PointSolveVelocity(c.bodies, t.point);
   return applied;
 }
 
 inline bool FixedConstraintSolvePosition(const ConstraintBlock& c, const StepScalars& step) {
   auto& s = c.Main<FixedConstraintLanes>();
+  auto& t = c.Scratch<FixedConstraintScratch>();
   bool applied = RotationEulerRecomputeAndSolvePosition(c.bodies, s.inv_initial_orientation,
-                                                        s.rotation, step.baumgarte);
-  applied |= PointRecomputeAndSolvePosition(c.bodies, s.anchors, s.point, step.baumgarte);
+                                                        t.rotation, step.baumgarte);
+  applied |= PointRecomputeAndSolvePosition(c.bodies, s.anchors, t.point, step.baumgarte);
   return applied;
 }
 

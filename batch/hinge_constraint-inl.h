@@ -72,22 +72,23 @@ HWY_INLINE LaneVec HingeUnwrappedAngleOfChunk(const BodyPair& bodies,
 
 // Writes a1, a2 (and theta) of the current rotations into the hinge's lanes.
 HWY_INLINE void HingeAxesAndAngle(const ConstraintBlock& c, bool with_angle) {
-  auto& s = c.Main<HingeConstraintLanes>();
+  const auto& s = c.Main<HingeConstraintLanes>();
+  auto& t = c.Scratch<HingeConstraintScratch>();
   ForEachChunk([&](std::size_t offset) {
     const Vec3 a1 = HingeAxis1OfChunk(c.bodies, s, offset);
     const Vec3 a2 = Rotate(LoadQuat(c.bodies.body2->rotation, offset),
                            LoadVec3(s.hinge_axis2_local, offset));
-    StoreVec3(a1, s.rotation_geometry.hinge_axis1, offset);
-    StoreVec3(a2, s.rotation_geometry.hinge_axis2, offset);
-    if (with_angle) Store(HingeAngleOfChunk(c.bodies, s, a1, offset), s.angle, offset);
+    StoreVec3(a1, t.rotation_geometry.hinge_axis1, offset);
+    StoreVec3(a2, t.rotation_geometry.hinge_axis2, offset);
+    if (with_angle) Store(HingeAngleOfChunk(c.bodies, s, a1, offset), t.angle, offset);
   });
 }
 
 // Whole turns of theta: a jump of more than pi since the last setup is a wrap
 // through +-pi (the hinge turned less than pi, the other way round).
-HWY_INLINE void HingeCountTurns(HingeConstraintLanes& s) {
+HWY_INLINE void HingeCountTurns(HingeConstraintLanes& s, const HingeConstraintScratch& t) {
   ForEachChunk([&](std::size_t offset) {
-    const LaneVec theta = Load(s.angle, offset);
+    const LaneVec theta = Load(t.angle, offset);
     const LaneVec jump = hn::Sub(theta, Load(s.turn_reference_angle, offset));
     const LaneVec pi = Splat(kPiHigh);
     const LaneVec up = hn::IfThenElseZero(hn::Lt(jump, hn::Neg(pi)), Splat(1.0f));
@@ -100,11 +101,11 @@ HWY_INLINE void HingeCountTurns(HingeConstraintLanes& s) {
 // The limit row from theta (setup and position phase); deactivates the lanes
 // whose angle is inside the limits.
 inline void HingeLimitProperties(const ConstraintBlock& c, const StepScalars& step) {
-  const auto& s = c.Main<HingeConstraintLanes>();
+  const auto& t = c.Scratch<HingeConstraintScratch>();
   auto& limit = c.Limit<AngularLimitLanes>();
   LaneFlags inside;
   ForEachChunk([&](std::size_t offset) {
-    const LaneVec theta = Load(s.angle, offset);
+    const LaneVec theta = Load(t.angle, offset);
     const LaneVec min = Load(limit.min, offset);
     const LaneVec max = Load(limit.max, offset);
     const LaneVec to_min = CenterAngleAroundZero(hn::Sub(theta, min));
@@ -112,7 +113,7 @@ inline void HingeLimitProperties(const ConstraintBlock& c, const StepScalars& st
     const LaneMask min_nearer = hn::Lt(hn::Abs(to_min), hn::Abs(to_max));
     Store(hn::IfThenElse(min_nearer, to_min, to_max), limit.geometry.error, offset);
     StoreLimitImpulseRange(min_nearer, hn::Eq(min, max), limit.geometry, offset);
-    StoreVec3(LoadVec3(s.rotation_geometry.hinge_axis1, offset), limit.geometry.axis, offset);
+    StoreVec3(LoadVec3(t.rotation_geometry.hinge_axis1, offset), limit.geometry.axis, offset);
     StoreFlags(hn::Not(hn::Or(hn::Le(theta, min), hn::Ge(theta, max))), inside, offset);
   });
   AngleCalculatePropertiesForLimit(c.bodies, limit.geometry, limit.part, step.delta_time,
@@ -122,16 +123,16 @@ inline void HingeLimitProperties(const ConstraintBlock& c, const StepScalars& st
 
 // The motor or friction row from theta and the per-world targets.
 inline void HingeMotorProperties(const ConstraintBlock& c, const StepScalars& step) {
-  const auto& s = c.Main<HingeConstraintLanes>();
+  const auto& t = c.Scratch<HingeConstraintScratch>();
   auto& motor = c.Motor<AngularMotorLanes>();
   const DriveKind drive = c.plan.drive;
   const LaneVec dt = Splat(step.delta_time);
   LaneFlags no_spring;
   ForEachChunk([&](std::size_t offset) {
-    StoreVec3(LoadVec3(s.rotation_geometry.hinge_axis1, offset), motor.geometry.axis, offset);
+    StoreVec3(LoadVec3(t.rotation_geometry.hinge_axis1, offset), motor.geometry.axis, offset);
     StoreDriveRow(drive, dt, motor, no_spring, offset);
     Store(CenterAngleAroundZero(
-              hn::Sub(Load(s.angle, offset), Load(motor.target_position, offset))),
+              hn::Sub(Load(t.angle, offset), Load(motor.target_position, offset))),
           motor.geometry.error, offset);
   });
   CalculateDriveRowProperties(c.bodies, drive, c.plan.motor_spring_mode, step.delta_time,
@@ -140,33 +141,34 @@ inline void HingeMotorProperties(const ConstraintBlock& c, const StepScalars& st
 
 inline void HingeConstraintSetup(const ConstraintBlock& c, const StepScalars& step) {
   auto& s = c.Main<HingeConstraintLanes>();
+  auto& t = c.Scratch<HingeConstraintScratch>();
   // The angle every setup, also without limits or motor: it counts turns.
   HingeAxesAndAngle(c, true);
-  HingeCountTurns(s);
-  PointCalculateProperties(c.bodies, s.anchors, s.point);
-  HingeRotationCalculateProperties(c.bodies, s.rotation_geometry, s.rotation);
+  HingeCountTurns(s, t);
+  PointCalculateProperties(c.bodies, s.anchors, t.point);
+  HingeRotationCalculateProperties(c.bodies, t.rotation_geometry, t.rotation);
   if (c.plan.has_limits()) HingeLimitProperties(c, step);
   if (c.plan.has_motor()) HingeMotorProperties(c, step);
 }
 
 inline void HingeConstraintWarmStart(const ConstraintBlock& c, const StepScalars& step) {
-  auto& s = c.Main<HingeConstraintLanes>();
+  auto& t = c.Scratch<HingeConstraintScratch>();
   const float ratio = step.warm_start_ratio;
   if (c.plan.has_motor()) AngleWarmStart(c.bodies, c.Motor<AngularMotorLanes>().part, ratio);
-  PointWarmStart(c.bodies, s.point, ratio);
-  HingeRotationWarmStart(c.bodies, s.rotation, ratio);
+  PointWarmStart(c.bodies, t.point, ratio);
+  HingeRotationWarmStart(c.bodies, t.rotation, ratio);
   if (c.plan.has_limits()) AngleWarmStart(c.bodies, c.Limit<AngularLimitLanes>().part, ratio);
 }
 
 inline bool HingeConstraintSolveVelocity(const ConstraintBlock& c) {
-  auto& s = c.Main<HingeConstraintLanes>();
+  auto& t = c.Scratch<HingeConstraintScratch>();
   bool applied = false;
   if (c.plan.has_motor()) {
     auto& motor = c.Motor<AngularMotorLanes>();
     applied |= AngleSolveVelocity(c.bodies, motor.geometry, motor.part);
   }
-  applied |= PointSolveVelocity(c.bodies, s.point);
-  applied |= HingeRotationSolveVelocity(c.bodies, s.rotation);
+  applied |= PointSolveVelocity(c.bodies, t.point);
+  applied |= HingeRotationSolveVelocity(c.bodies, t.rotation);
   if (c.plan.has_limits()) {
     auto& limit = c.Limit<AngularLimitLanes>();
     applied |= AngleSolveVelocity(c.bodies, limit.geometry, limit.part);
@@ -175,16 +177,17 @@ inline bool HingeConstraintSolveVelocity(const ConstraintBlock& c) {
 }
 
 inline bool HingeConstraintSolvePosition(const ConstraintBlock& c, const StepScalars& step) {
-  auto& s = c.Main<HingeConstraintLanes>();
-  bool applied = PointRecomputeAndSolvePosition(c.bodies, s.anchors, s.point, step.baumgarte);
+  auto& t = c.Scratch<HingeConstraintScratch>();
+  bool applied = PointRecomputeAndSolvePosition(c.bodies, c.Main<HingeConstraintLanes>().anchors,
+                                                t.point, step.baumgarte);
   HingeAxesAndAngle(c, false);
   // Where the axes are exactly aligned in every world (a planar mechanism
   // turning about its hinges only), the step would turn nothing: the
   // inverse inertias and K^-1 are not worth computing; an aligned lane is
   // left as it is either way (docs/stepping.md).
-  if (!HingeRotationAxes(s.rotation_geometry, s.rotation)) {
-    HingeRotationEffectiveMass(c.bodies, s.rotation, /*position_phase=*/true);
-    applied |= HingeRotationSolvePosition(c.bodies, s.rotation, step.baumgarte);
+  if (!HingeRotationAxes(t.rotation_geometry, t.rotation)) {
+    HingeRotationEffectiveMass(c.bodies, t.rotation, /*position_phase=*/true);
+    applied |= HingeRotationSolvePosition(c.bodies, t.rotation, step.baumgarte);
   }
   if (c.plan.has_limits() && !c.plan.soft_limits) {
     HingeAxesAndAngle(c, true);

@@ -40,21 +40,34 @@ const char* SettingsTypeName(const ConstraintSettings& settings) {
 
 namespace {
 
-// Bump allocator over one block; every struct is a whole number of LaneArrays.
+// Bump allocator over one block and its scratch (StepPlan::block_bytes,
+// scratch_bytes); every struct is a whole number of LaneArrays. Scratch
+// offsets count from the scratch's start until the stored block's size is
+// known (ScratchInWorkingBlock).
 class BlockLayout {
  public:
   template <class T>
   std::size_t Add() {
-    static_assert(sizeof(T) % sizeof(LaneArray) == 0, "block structs are LaneArrays");
-    static_assert(alignof(T) == alignof(LaneArray), "block structs are LaneArrays");
-    const std::size_t offset = bytes_;
-    bytes_ += sizeof(T);
-    return offset;
+    return Bump<T>(bytes_);
+  }
+  template <class T>
+  std::size_t AddScratch() {
+    return Bump<T>(scratch_bytes_);
   }
   std::size_t bytes() const { return bytes_; }
+  std::size_t scratch_bytes() const { return scratch_bytes_; }
 
  private:
+  template <class T>
+  static std::size_t Bump(std::size_t& bytes) {
+    static_assert(sizeof(T) % sizeof(LaneArray) == 0, "block structs are LaneArrays");
+    static_assert(alignof(T) == alignof(LaneArray), "block structs are LaneArrays");
+    const std::size_t offset = bytes;
+    bytes += sizeof(T);
+    return offset;
+  }
   std::size_t bytes_ = 0;
+  std::size_t scratch_bytes_ = 0;
 };
 
 // "name[i]", built by appending (GCC 12 warns falsely on "[" + string).
@@ -424,14 +437,53 @@ void CheckStepSettings(const StepSettings& s, const StepPlan& plan) {
 
 namespace {
 
-// StepPlan::velocity_pass_arrays. The views only compute addresses, so a
-// zeroed block of the plan's size stands in for a real one.
+// The stored block's size known, the scratch structs move past it, into the
+// working block (StepPlan::block_bytes).
+void ScratchInWorkingBlock(StepPlan& plan, const BlockLayout& layout) {
+  plan.block_bytes = layout.bytes();
+  plan.scratch_bytes = layout.scratch_bytes();
+  for (ConstraintPlan& c : plan.constraints) {
+    if (c.scratch_offset != kAbsent) c.scratch_offset += plan.block_bytes;
+  }
+}
+
+// A zeroed working block of the plan's size: the views only compute
+// addresses, so it stands in for a real one.
+std::vector<LaneArray> AddressOnlyBlock(const StepPlan& plan) {
+  return std::vector<LaneArray>(plan.working_bytes() / sizeof(LaneArray) + 1);
+}
+
+// StepPlan::carried, from each type's CarryState.
+void ListCarriedState(StepPlan& plan) {
+  std::vector<LaneArray> block = AddressOnlyBlock(plan);
+  std::byte* base = reinterpret_cast<std::byte*>(block.data());
+  const auto at = [&](const void* p) {
+    return static_cast<std::size_t>(static_cast<const std::byte*>(p) - base);
+  };
+  for (std::size_t k = 0; k < plan.constraints.size(); ++k) {
+    VisitCarriedState(ConstraintInBlock(plan, k, base), [&](auto& home, auto& scratch) {
+      static_assert(sizeof(home) == sizeof(scratch));
+      plan.carried.push_back({at(&home), at(&scratch), sizeof(home)});
+    });
+  }
+}
+
+// StepPlan::velocity_pass_arrays: inside a step, so the carried impulses'
+// places in the scratch rather than their homes.
 void ListVelocityPassArrays(StepPlan& plan) {
-  std::vector<LaneArray> block(plan.block_bytes / sizeof(LaneArray) + 1);
+  std::vector<LaneArray> block = AddressOnlyBlock(plan);
   std::byte* base = reinterpret_cast<std::byte*>(block.data());
   std::vector<std::size_t>& arrays = plan.velocity_pass_arrays;
   const auto add = [&](const LaneArray& array) {
-    arrays.push_back(static_cast<std::size_t>(reinterpret_cast<const std::byte*>(&array) - base));
+    std::size_t offset =
+        static_cast<std::size_t>(reinterpret_cast<const std::byte*>(&array) - base);
+    for (const CarriedState& carried : plan.carried) {
+      if (offset >= carried.home && offset < carried.home + carried.bytes) {
+        offset += carried.scratch - carried.home;
+        break;
+      }
+    }
+    arrays.push_back(offset);
   };
   const auto add3 = [&](const Vec3Lanes& v) {
     add(v.x);
@@ -521,6 +573,7 @@ StepPlan CompilePlan(const Scene& scene) {
             CheckFinite(what, "point2", s.point2);
             c.type = ConstraintType::kPoint;
             c.offset = layout.Add<PointConstraintLanes>();
+            c.scratch_offset = layout.AddScratch<PointConstraintScratch>();
           } else if constexpr (std::is_same_v<S, FixedConstraintSettings>) {
             CheckFinite(what, "point1", s.point1);
             CheckFinite(what, "point2", s.point2);
@@ -531,6 +584,7 @@ StepPlan CompilePlan(const Scene& scene) {
             }
             c.type = ConstraintType::kFixed;
             c.offset = layout.Add<FixedConstraintLanes>();
+            c.scratch_offset = layout.AddScratch<FixedConstraintScratch>();
           } else if constexpr (std::is_same_v<S, HingeConstraintSettings>) {
             CheckFinite(what, "point1", s.point1);
             CheckFinite(what, "point2", s.point2);
@@ -544,6 +598,7 @@ StepPlan CompilePlan(const Scene& scene) {
             CheckFinite(what, "target_angle", s.target_angle);
             c.type = ConstraintType::kHinge;
             c.offset = layout.Add<HingeConstraintLanes>();
+            c.scratch_offset = layout.AddScratch<HingeConstraintScratch>();
             if (!(s.limits_min == -kPi && s.limits_max == kPi)) {
               c.limit_offset = layout.Add<AngularLimitLanes>();
               c.soft_limits = s.limits_spring.HasStiffness();
@@ -569,6 +624,7 @@ StepPlan CompilePlan(const Scene& scene) {
             CheckFinite(what, "target_position", s.target_position);
             c.type = ConstraintType::kSlider;
             c.offset = layout.Add<SliderConstraintLanes>();
+            c.scratch_offset = layout.AddScratch<SliderConstraintScratch>();
             if (limits.min != -FLT_MAX || limits.max != FLT_MAX) {
               c.limit_offset = layout.Add<LinearLimitLanes>();
               c.soft_limits = s.limits_spring.HasStiffness();
@@ -748,7 +804,8 @@ StepPlan CompilePlan(const Scene& scene) {
     c.motion_offset2 = plan.bodies[c.body2].motion_offset;
   }
 
-  plan.block_bytes = layout.bytes();
+  ScratchInWorkingBlock(plan, layout);
+  ListCarriedState(plan);
   ListVelocityPassArrays(plan);
   ChooseRodGroups(scene, plan);
   plan.exact = PlanExactSolve(scene, plan);
@@ -802,6 +859,8 @@ std::string DescribePlan(const StepPlan& plan, const StepSettings& settings) {
   }
   out << "storage: " << plan.block_bytes << " bytes per block of " << kLaneWidth
       << " worlds, " << plan.block_bytes / kLaneWidth << " bytes per world\n";
+  out << "scratch: " << plan.scratch_bytes
+      << " bytes per thread (recomputed at every substep's setup)\n";
   return out.str();
 }
 

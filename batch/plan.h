@@ -85,6 +85,9 @@ struct ConstraintPlan {
   std::size_t body1, body2;
   MotionType motion1, motion2;
   std::size_t offset = kAbsent;        // the type's main storage in the block
+  // The type's ...Scratch struct (constraint_lanes.h), if it has one: an
+  // offset into the working block, past the stored bytes (StepPlan).
+  std::size_t scratch_offset = kAbsent;
   std::size_t limit_offset = kAbsent;  // hinge / slider limit row, if limited
   std::size_t motor_offset = kAbsent;  // hinge / slider motor or friction row
   DriveKind drive = DriveKind::kNone;
@@ -149,12 +152,27 @@ struct BodyPlan {
   std::size_t motion_offset = kAbsent;   // BodyMotionLanes, dynamic bodies only
 };
 
+// An accumulated impulse homed in the stored block and used, during a step,
+// from a part in the scratch (constraint_lanes.h, CarryState): both are
+// offsets in the working block.
+struct CarriedState {
+  std::size_t home, scratch, bytes;
+};
+
 struct StepPlan {
   std::vector<BodyPlan> bodies;
   std::vector<ConstraintPlan> constraints;
   std::vector<ContactPlan> contacts;  // solved after every constraint
   std::size_t health_offset = 0;  // WorldHealthLanes in the block
-  std::size_t block_bytes = 0;  // one block of kLaneWidth worlds
+  // One block of kLaneWidth worlds as stored: bodies, parameters and what
+  // survives a step. A block steps in a working block of block_bytes +
+  // scratch_bytes, one per thread: a copy of the stored block followed by
+  // what setup recomputes at every substep (the ...Scratch structs), so the
+  // latter never travels to memory nor takes space per world. Without
+  // scratch (scratch_bytes == 0) a block steps where it is stored.
+  std::size_t block_bytes = 0;
+  std::size_t scratch_bytes = 0;
+  std::vector<CarriedState> carried;
   bool any_dynamic = false;
   ExactSolvePlan exact;  // JointSolver::kExact
   // Every array a velocity pass writes (Gauss-Seidel's, or the exact
@@ -167,6 +185,7 @@ struct StepPlan {
   std::size_t body_velocity_arrays = 0;
 
   std::size_t block_floats() const { return block_bytes / sizeof(float); }
+  std::size_t working_bytes() const { return block_bytes + scratch_bytes; }
 };
 
 // Checks the scene and lays it out; throws SceneError.

@@ -20,21 +20,22 @@ namespace manyworlds {
 namespace HWY_NAMESPACE {
 
 inline void PointConstraintSetup(const ConstraintBlock& c, const StepScalars&) {
-  auto& s = c.Main<PointConstraintLanes>();
-  PointCalculateProperties(c.bodies, s.anchors, s.point);
+  PointCalculateProperties(c.bodies, c.Main<PointConstraintLanes>().anchors,
+                           c.Scratch<PointConstraintScratch>().point);
 }
 
 inline void PointConstraintWarmStart(const ConstraintBlock& c, const StepScalars& step) {
-  PointWarmStart(c.bodies, c.Main<PointConstraintLanes>().point, step.warm_start_ratio);
+  PointWarmStart(c.bodies, c.Scratch<PointConstraintScratch>().point, step.warm_start_ratio);
 }
 
 inline bool PointConstraintSolveVelocity(const ConstraintBlock& c) {
-  return PointSolveVelocity(c.bodies, c.Main<PointConstraintLanes>().point);
+  return PointSolveVelocity(c.bodies, c.Scratch<PointConstraintScratch>().point);
 }
 
 inline bool PointConstraintSolvePosition(const ConstraintBlock& c, const StepScalars& step) {
-  auto& s = c.Main<PointConstraintLanes>();
-  return PointRecomputeAndSolvePosition(c.bodies, s.anchors, s.point, step.baumgarte);
+  return PointRecomputeAndSolvePosition(c.bodies, c.Main<PointConstraintLanes>().anchors,
+                                        c.Scratch<PointConstraintScratch>().point,
+                                        step.baumgarte);
 }
 
 }  // namespace HWY_NAMESPACE

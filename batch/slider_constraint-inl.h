@@ -59,35 +59,36 @@ HWY_INLINE LaneVec SliderCurrentPositionOfChunk(const BodyPair& bodies,
 
 // Writes the dual-axis geometry, u, s and d of the current poses.
 HWY_INLINE void SliderGeometry(const ConstraintBlock& c) {
-  auto& s = c.Main<SliderConstraintLanes>();
+  const auto& s = c.Main<SliderConstraintLanes>();
+  auto& t = c.Scratch<SliderConstraintScratch>();
   ForEachChunk([&](std::size_t offset) {
     const SliderFrame frame = SliderFrameOfChunk(c.bodies, s, offset);
     const Quat q1 = LoadQuat(c.bodies.body1->rotation, offset);
-    StoreVec3(frame.r1_plus_u, s.dual_geometry.r1_plus_u, offset);
-    StoreVec3(frame.r2, s.dual_geometry.r2, offset);
-    StoreVec3(Rotate(q1, LoadVec3(s.normal_axis1_local, offset)), s.dual_geometry.n1, offset);
-    StoreVec3(Rotate(q1, LoadVec3(s.binormal_axis1_local, offset)), s.dual_geometry.n2,
+    StoreVec3(frame.r1_plus_u, t.dual_geometry.r1_plus_u, offset);
+    StoreVec3(frame.r2, t.dual_geometry.r2, offset);
+    StoreVec3(Rotate(q1, LoadVec3(s.normal_axis1_local, offset)), t.dual_geometry.n1, offset);
+    StoreVec3(Rotate(q1, LoadVec3(s.binormal_axis1_local, offset)), t.dual_geometry.n2,
               offset);
-    StoreVec3(frame.separation, s.separation, offset);
-    StoreVec3(frame.slider_axis, s.slider_axis, offset);
-    Store(Dot(frame.separation, frame.slider_axis), s.position, offset);
+    StoreVec3(frame.separation, t.separation, offset);
+    StoreVec3(frame.slider_axis, t.slider_axis, offset);
+    Store(Dot(frame.separation, frame.slider_axis), t.position, offset);
   });
 }
 
 // An axis row along the slider axis with the lever arms of this step.
-HWY_INLINE void SliderAxisRow(const SliderConstraintLanes& s, AxisGeometry& row,
+HWY_INLINE void SliderAxisRow(const SliderConstraintScratch& t, AxisGeometry& row,
                               std::size_t offset) {
-  StoreAxisRow(s.dual_geometry.r1_plus_u, s.dual_geometry.r2, s.slider_axis, row, offset);
+  StoreAxisRow(t.dual_geometry.r1_plus_u, t.dual_geometry.r2, t.slider_axis, row, offset);
 }
 
 // The limit row from d; deactivates the lanes inside the limits.
 inline void SliderLimitProperties(const ConstraintBlock& c, const StepScalars& step) {
-  const auto& s = c.Main<SliderConstraintLanes>();
+  const auto& t = c.Scratch<SliderConstraintScratch>();
   auto& limit = c.Limit<LinearLimitLanes>();
   LaneFlags inside;
   ForEachChunk([&](std::size_t offset) {
-    SliderAxisRow(s, limit.geometry, offset);
-    const LaneVec d = Load(s.position, offset);
+    SliderAxisRow(t, limit.geometry, offset);
+    const LaneVec d = Load(t.position, offset);
     const LaneVec min = Load(limit.min, offset);
     const LaneVec max = Load(limit.max, offset);
     const LaneMask below = hn::Le(d, min);
@@ -102,15 +103,15 @@ inline void SliderLimitProperties(const ConstraintBlock& c, const StepScalars& s
 
 // The motor or friction row from d and the per-world targets.
 inline void SliderMotorProperties(const ConstraintBlock& c, const StepScalars& step) {
-  const auto& s = c.Main<SliderConstraintLanes>();
+  const auto& t = c.Scratch<SliderConstraintScratch>();
   auto& motor = c.Motor<LinearMotorLanes>();
   const DriveKind drive = c.plan.drive;
   const LaneVec dt = Splat(step.delta_time);
   LaneFlags no_spring;
   ForEachChunk([&](std::size_t offset) {
-    SliderAxisRow(s, motor.geometry, offset);
+    SliderAxisRow(t, motor.geometry, offset);
     StoreDriveRow(drive, dt, motor, no_spring, offset);
-    Store(hn::Sub(Load(s.position, offset), Load(motor.target_position, offset)),
+    Store(hn::Sub(Load(t.position, offset), Load(motor.target_position, offset)),
           motor.geometry.error, offset);
   });
   CalculateDriveRowProperties(c.bodies, drive, c.plan.motor_spring_mode, step.delta_time,
@@ -118,23 +119,23 @@ inline void SliderMotorProperties(const ConstraintBlock& c, const StepScalars& s
 }
 
 inline void SliderConstraintSetup(const ConstraintBlock& c, const StepScalars& step) {
-  auto& s = c.Main<SliderConstraintLanes>();
+  auto& t = c.Scratch<SliderConstraintScratch>();
   SliderGeometry(c);
-  DualAxisCalculateProperties(c.bodies, s.dual_geometry, s.dual);
-  RotationEulerCalculateProperties(c.bodies, s.rotation);
+  DualAxisCalculateProperties(c.bodies, t.dual_geometry, t.dual);
+  RotationEulerCalculateProperties(c.bodies, t.rotation);
   if (c.plan.has_limits()) SliderLimitProperties(c, step);
   if (c.plan.has_motor()) SliderMotorProperties(c, step);
 }
 
 inline void SliderConstraintWarmStart(const ConstraintBlock& c, const StepScalars& step) {
-  auto& s = c.Main<SliderConstraintLanes>();
+  auto& t = c.Scratch<SliderConstraintScratch>();
   const float ratio = step.warm_start_ratio;
   if (c.plan.has_motor()) {
     auto& motor = c.Motor<LinearMotorLanes>();
     AxisWarmStart(c.bodies, motor.geometry, motor.part, ratio);
   }
-  DualAxisWarmStart(c.bodies, s.dual_geometry, s.dual, ratio);
-  RotationEulerWarmStart(c.bodies, s.rotation, ratio);
+  DualAxisWarmStart(c.bodies, t.dual_geometry, t.dual, ratio);
+  RotationEulerWarmStart(c.bodies, t.rotation, ratio);
   if (c.plan.has_limits()) {
     auto& limit = c.Limit<LinearLimitLanes>();
     AxisWarmStart(c.bodies, limit.geometry, limit.part, ratio);
@@ -142,14 +143,14 @@ inline void SliderConstraintWarmStart(const ConstraintBlock& c, const StepScalar
 }
 
 inline bool SliderConstraintSolveVelocity(const ConstraintBlock& c) {
-  auto& s = c.Main<SliderConstraintLanes>();
+  auto& t = c.Scratch<SliderConstraintScratch>();
   bool applied = false;
   if (c.plan.has_motor()) {
     auto& motor = c.Motor<LinearMotorLanes>();
     applied |= AxisSolveVelocity(c.bodies, motor.geometry, motor.part);
   }
-  applied |= DualAxisSolveVelocity(c.bodies, s.dual_geometry, s.dual);
-  applied |= RotationEulerSolveVelocity(c.bodies, s.rotation);
+  applied |= DualAxisSolveVelocity(c.bodies, t.dual_geometry, t.dual);
+  applied |= RotationEulerSolveVelocity(c.bodies, t.rotation);
   if (c.plan.has_limits()) {
     auto& limit = c.Limit<LinearLimitLanes>();
     applied |= AxisSolveVelocity(c.bodies, limit.geometry, limit.part);
@@ -158,12 +159,13 @@ inline bool SliderConstraintSolveVelocity(const ConstraintBlock& c) {
 }
 
 inline bool SliderConstraintSolvePosition(const ConstraintBlock& c, const StepScalars& step) {
-  auto& s = c.Main<SliderConstraintLanes>();
+  auto& t = c.Scratch<SliderConstraintScratch>();
   SliderGeometry(c);
-  bool applied = DualAxisRecomputeAndSolvePosition(c.bodies, s.dual_geometry, s.separation,
-                                                   s.dual, step.baumgarte);
-  applied |= RotationEulerRecomputeAndSolvePosition(c.bodies, s.inv_initial_orientation,
-                                                    s.rotation, step.baumgarte);
+  bool applied = DualAxisRecomputeAndSolvePosition(c.bodies, t.dual_geometry, t.separation,
+                                                   t.dual, step.baumgarte);
+  applied |= RotationEulerRecomputeAndSolvePosition(
+      c.bodies, c.Main<SliderConstraintLanes>().inv_initial_orientation, t.rotation,
+      step.baumgarte);
   if (c.plan.has_limits() && !c.plan.soft_limits) {
     SliderGeometry(c);
     SliderLimitProperties(c, step);

@@ -468,6 +468,18 @@ TEST(PlanTest, StorageAndPartsAreOnlyWhatTheSceneUses) {
   // per-world health flags every block has.
   EXPECT_EQ(plain.block_bytes, 2 * sizeof(BodyLanes) + sizeof(BodyMotionLanes) +
                                    sizeof(HingeConstraintLanes) + sizeof(WorldHealthLanes));
+  // What the hinge's setup recomputes is in the thread's scratch, past the
+  // stored block, and its two parts' impulses are carried in and out of it.
+  EXPECT_EQ(plain.scratch_bytes, sizeof(HingeConstraintScratch));
+  EXPECT_EQ(plain.constraints[0].scratch_offset, plain.block_bytes);
+  ASSERT_EQ(plain.carried.size(), 2u);
+  EXPECT_EQ(plain.carried[0].bytes, sizeof(PointLanes::Persistent));
+  EXPECT_EQ(plain.carried[1].bytes, sizeof(HingeRotationLanes::Persistent));
+  for (const CarriedState& carried : plain.carried) {
+    EXPECT_LE(carried.home + carried.bytes, plain.block_bytes);
+    EXPECT_GE(carried.scratch, plain.block_bytes);
+    EXPECT_LE(carried.scratch + carried.bytes, plain.working_bytes());
+  }
 
   Hinge(scene).limits_min = -1.0f;
   Hinge(scene).motor_state = MotorState::kVelocity;

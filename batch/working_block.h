@@ -1,0 +1,49 @@
+// The working block a block steps in (StepPlan::block_bytes, scratch_bytes):
+// a copy of the stored block followed by the scratch its setup recomputes at
+// every substep, one per thread and reused block after block, so that the
+// scratch stays in L1 or L2 and takes no space per world.
+#pragma once
+
+#include <cstddef>
+#include <cstring>
+#include <vector>
+
+#include "batch/plan.h"
+#include "manyworlds/lanes.h"
+
+namespace manyworlds {
+
+class WorkingBlock {
+ public:
+  // Copies `stored` in, with each carried impulse into its part; a plan
+  // without scratch steps the stored block itself.
+  WorkingBlock(const StepPlan& plan, std::byte* stored) : plan_(plan), stored_(stored) {
+    if (plan.scratch_bytes == 0) {
+      bytes_ = stored;
+      return;
+    }
+    thread_local std::vector<LaneArray> buffer;
+    const std::size_t arrays = plan.working_bytes() / sizeof(LaneArray);
+    if (buffer.size() < arrays) buffer.resize(arrays);
+    bytes_ = reinterpret_cast<std::byte*>(buffer.data());
+    std::memcpy(bytes_, stored, plan.block_bytes);
+    for (const CarriedState& c : plan.carried) std::memcpy(bytes_ + c.scratch, bytes_ + c.home, c.bytes);
+  }
+  // Copies the carried impulses home and the block back.
+  ~WorkingBlock() {
+    if (bytes_ == stored_) return;
+    for (const CarriedState& c : plan_.carried) std::memcpy(bytes_ + c.home, bytes_ + c.scratch, c.bytes);
+    std::memcpy(stored_, bytes_, plan_.block_bytes);
+  }
+  WorkingBlock(const WorkingBlock&) = delete;
+  WorkingBlock& operator=(const WorkingBlock&) = delete;
+
+  std::byte* bytes() const { return bytes_; }
+
+ private:
+  const StepPlan& plan_;
+  std::byte* stored_;
+  std::byte* bytes_;
+};
+
+}  // namespace manyworlds
