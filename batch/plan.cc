@@ -523,8 +523,11 @@ StepPlan CompilePlan(const Scene& scene) {
   for (std::size_t i = 0; i < body_count; ++i) {
     const BodySettings& body = scene.bodies()[i];
     CheckBody(body, BodyLabel(scene, i));
-    plan.bodies.push_back(BodyPlan{BodyLabel(scene, i), body.motion_type,
-                                   layout.Add<BodyLanes>()});
+    BodyPlan& planned = plan.bodies.emplace_back(
+        BodyPlan{BodyLabel(scene, i), body.motion_type, layout.Add<BodyLanes>()});
+    planned.dof_restricted =
+        body.motion_type != MotionType::kStatic && body.allowed_dofs != AllowedDofs::kAll;
+    if (planned.dof_restricted) layout.Add<BodyLockLanes>();
   }
   plan.health_offset = layout.Add<WorldHealthLanes>();
   for (BodyPlan& body : plan.bodies) {

@@ -150,6 +150,9 @@ struct BodyPlan {
   MotionType motion;
   std::size_t offset;                    // BodyLanes in the block
   std::size_t motion_offset = kAbsent;   // BodyMotionLanes, dynamic bodies only
+  // Some axis locked (allowed DOFs, spec 4.3; never for a static body, which
+  // never moves): its BodyLockLanes follow its BodyLanes.
+  bool dof_restricted = false;
 };
 
 // An accumulated impulse homed in the stored block and used, during a step,

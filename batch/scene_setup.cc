@@ -152,10 +152,12 @@ void WriteBodies(const Scene& scene, const StepPlan& plan, std::byte* block) {
     // The initial velocities are locked as Jolt's SetLinear/AngularVelocity do.
     const Vector translation_mask = TranslationMask(body);
     const Vector rotation_mask = RotationMask(body);
-    const bool restricted = !is_static && body.allowed_dofs != AllowedDofs::kAll;
+    const bool restricted = plan.bodies[i].dof_restricted;
     Fill(lanes.dof_restricted, restricted ? 1.0 : 0.0);
-    Fill(lanes.translation_locked, Vector(Vector::Ones() - translation_mask));
-    Fill(lanes.rotation_locked, Vector(Vector::Ones() - rotation_mask));
+    if (restricted) {
+      Fill(Locks(lanes).translation_locked, Vector(Vector::Ones() - translation_mask));
+      Fill(Locks(lanes).rotation_locked, Vector(Vector::Ones() - rotation_mask));
+    }
     Fill(lanes.position, ToVector(body.position));
     Fill(lanes.rotation, ToRotation(body.rotation));
     Fill(lanes.linear_velocity, is_static ? Vector::Zero()

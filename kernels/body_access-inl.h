@@ -9,8 +9,9 @@
 // vector form masks its input and its output). Angular velocity and rotation
 // steps are not masked again: they only ever come out of the masked inertia.
 // The masks cost nothing for unrestricted bodies: body.dof_restricted is the
-// same in every lane, so lane 0 decides a predictable scalar branch. Masking is
-// a select, so locked components are exactly +0 (as Jolt's bitwise AND).
+// same in every lane, so lane 0 decides a predictable scalar branch (and only
+// restricted bodies store locks, BodyLockLanes). Masking is a select, so
+// locked components are exactly +0 (as Jolt's bitwise AND).
 
 #if defined(MANYWORLDS_KERNELS_BODY_ACCESS_INL_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef MANYWORLDS_KERNELS_BODY_ACCESS_INL_H_
@@ -44,7 +45,7 @@ HWY_INLINE Vec3 MaskAxes(const Vec3Lanes& locked, const Vec3& v, std::size_t off
 HWY_INLINE Vec3 LockTranslation(const BodyLanes& body, const Vec3& v,
                                 std::size_t offset) {
   if (!DofRestricted(body)) return v;
-  return MaskAxes(body.translation_locked, v, offset);
+  return MaskAxes(Locks(body).translation_locked, v, offset);
 }
 
 // Velocities as Body::GetLinear/AngularVelocity return them: zero if static.
@@ -67,9 +68,10 @@ HWY_INLINE Sym33 BodyInverseInertia(const BodyLanes& body, std::size_t offset) {
                                       LoadQuat(body.inertia_rotation, offset),
                                       LoadVec3(body.inv_inertia_diagonal, offset));
   if (!DofRestricted(body)) return inverse;
-  const LaneMask x = hn::Eq(Load(body.rotation_locked.x, offset), Zero());
-  const LaneMask y = hn::Eq(Load(body.rotation_locked.y, offset), Zero());
-  const LaneMask z = hn::Eq(Load(body.rotation_locked.z, offset), Zero());
+  const Vec3Lanes& locked = Locks(body).rotation_locked;
+  const LaneMask x = hn::Eq(Load(locked.x, offset), Zero());
+  const LaneMask y = hn::Eq(Load(locked.y, offset), Zero());
+  const LaneMask z = hn::Eq(Load(locked.z, offset), Zero());
   inverse.xx = hn::IfThenElseZero(x, inverse.xx);
   inverse.xy = hn::IfThenElseZero(x, inverse.xy);
   inverse.xz = hn::IfThenElseZero(x, inverse.xz);
@@ -90,9 +92,10 @@ HWY_INLINE Vec3 BodyInverseInertiaTimes(const BodyLanes& body, const Vec3& v,
   if (!DofRestricted(body)) {
     return MultiplyWorldInverseInertia(rotation, inertia_rotation, diagonal, v);
   }
-  return MaskAxes(body.rotation_locked,
+  const Vec3Lanes& locked = Locks(body).rotation_locked;
+  return MaskAxes(locked,
                   MultiplyWorldInverseInertia(rotation, inertia_rotation, diagonal,
-                                              MaskAxes(body.rotation_locked, v, offset)),
+                                              MaskAxes(locked, v, offset)),
                   offset);
 }
 

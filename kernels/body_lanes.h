@@ -20,15 +20,27 @@ struct BodyLanes {
   // Allowed degrees of freedom (Jolt's EAllowedDOFs, spec 4.3), a property of
   // the scene's body, so the same in every lane. dof_restricted is 1 if any
   // world axis is locked, else 0: body_access-inl.h tests lane 0 (a uniform,
-  // predictable branch) and only then applies the locks, so unrestricted
-  // bodies pay one scalar compare. Locks are 1 (locked) or 0 (free) per world
-  // axis, so that all-zero lanes are Jolt's default body: a lane whose locks
-  // are zero comes out bit-identical whether or not the masked path runs
-  // (which keeps real worlds exact even if a padding lane 0 holds garbage).
+  // predictable branch) and only then reads the locks (BodyLockLanes), so
+  // unrestricted bodies pay one scalar compare and store no locks.
   LaneArray dof_restricted;
+};
+
+// The locks of a body whose DOFs are restricted, stored right after its
+// BodyLanes (the plan lays them out for such bodies only; Locks). Locks are
+// 1 (locked) or 0 (free) per world axis, so that all-zero lanes are Jolt's
+// default body: a lane whose locks are zero comes out bit-identical whether
+// or not the masked path runs.
+struct BodyLockLanes {
   Vec3Lanes translation_locked;  // linear velocity writes and position steps
   Vec3Lanes rotation_locked;     // rows and columns of the world inverse inertia
 };
+// Only for a body with dof_restricted set: its locks follow it in the block.
+inline const BodyLockLanes& Locks(const BodyLanes& body) {
+  return *reinterpret_cast<const BodyLockLanes*>(&body + 1);
+}
+inline BodyLockLanes& Locks(BodyLanes& body) {
+  return *reinterpret_cast<BodyLockLanes*>(&body + 1);
+}
 
 // Per dynamic body: what the force step needs besides the state and mass
 // properties, per world so that randomising it costs nothing extra.

@@ -72,7 +72,7 @@ HWY_INLINE void ApplyGyroscopicStep(BodyLanes& body, LaneVec h) {
     };
     LaneMask solved = AllLanes();
     if (DofRestricted(body)) {
-      const Vec3 locked = LoadVec3(body.rotation_locked, offset);
+      const Vec3 locked = LoadVec3(Locks(body).rotation_locked, offset);
       solved = hn::Not(AnyComponentNonZero(locked));
     }
     Vec3 w1 = w0;

@@ -403,8 +403,9 @@ void FillInertiaBodies(Random& random, BodyLanes& body) {
 TEST_P(LaneMathTest, WorldInverseInertiaMatchesReference) {
   Random random(707);
   for (std::size_t block = 0; block < kBlocks; ++block) {
-    // Value-initialised: FillInertiaBodies does not write the allowed-DOF
-    // locks, and garbage there (seen in the -O0 ASan build) masks the inertia.
+    // Value-initialised: FillInertiaBodies does not write dof_restricted, and
+    // garbage there (seen in the -O0 ASan build) would send the kernels to
+    // DOF locks this body does not have (BodyLockLanes).
     BodyLanes body{};
     FillInertiaBodies(random, body);
     Sym33Lanes m;
@@ -429,8 +430,9 @@ TEST_P(LaneMathTest, WorldInverseInertiaMatchesReference) {
 TEST_P(LaneMathTest, InverseInertiaTimesMatchesReference) {
   Random random(808);
   for (std::size_t block = 0; block < kBlocks; ++block) {
-    // Value-initialised: FillInertiaBodies does not write the allowed-DOF
-    // locks, and garbage there (seen in the -O0 ASan build) masks the inertia.
+    // Value-initialised: FillInertiaBodies does not write dof_restricted, and
+    // garbage there (seen in the -O0 ASan build) would send the kernels to
+    // DOF locks this body does not have (BodyLockLanes).
     BodyLanes body{};
     FillInertiaBodies(random, body);
     Vec3Lanes v, product;

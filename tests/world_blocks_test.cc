@@ -56,15 +56,9 @@ std::vector<std::pair<const char*, const LaneArray*>> FieldsOf(const BodyLanes& 
           {"inertia_rotation.y", &b.inertia_rotation.y},
           {"inertia_rotation.z", &b.inertia_rotation.z},
           {"inertia_rotation.w", &b.inertia_rotation.w},
-          {"dof_restricted", &b.dof_restricted},
-          {"translation_locked.x", &b.translation_locked.x},
-          {"translation_locked.y", &b.translation_locked.y},
-          {"translation_locked.z", &b.translation_locked.z},
-          {"rotation_locked.x", &b.rotation_locked.x},
-          {"rotation_locked.y", &b.rotation_locked.y},
-          {"rotation_locked.z", &b.rotation_locked.z}};
+          {"dof_restricted", &b.dof_restricted}};
 }
-static_assert(sizeof(BodyLanes) == 28 * sizeof(LaneArray),
+static_assert(sizeof(BodyLanes) == 22 * sizeof(LaneArray),
               "FieldsOf must list every LaneArray of BodyLanes");
 
 // Field-by-field bit comparison of two body states, naming the field.
