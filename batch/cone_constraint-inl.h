@@ -32,6 +32,7 @@ namespace HWY_NAMESPACE {
 // deactivated (error 0, so the position phase takes no step there).
 inline void ConeRotationProperties(const ConstraintBlock& c) {
   auto& s = c.Main<ConeConstraintLanes>();
+  auto& t = c.Scratch<ConeConstraintScratch>();
   LaneFlags inside;
   ForEachChunk([&](std::size_t offset) {
     const Vec3 t1 = Rotate(LoadQuat(c.bodies.body1->rotation, offset),
@@ -48,37 +49,37 @@ inline void ConeRotationProperties(const ConstraintBlock& c) {
     const Vec3 previous = LoadVec3(s.geometry.axis, offset);
     StoreVec3(Select(outside, DirectionOrPrevious(cross, length, previous), previous),
               s.geometry.axis, offset);
-    Store(cos_theta, s.cos_theta, offset);
     Store(hn::IfThenElseZero(outside, hn::Sub(cos_theta, cos_alpha)), s.geometry.error, offset);
     StoreFlags(hn::Not(outside), inside, offset);
   });
-  AngleCalculateProperties(c.bodies, s.geometry, s.angle);
-  AngleDeactivate(s.angle, inside);
+  AngleCalculateProperties(c.bodies, s.geometry, t.angle);
+  AngleDeactivate(t.angle, inside);
 }
 
 inline void ConeConstraintSetup(const ConstraintBlock& c, const StepScalars&) {
-  auto& s = c.Main<ConeConstraintLanes>();
-  PointCalculateProperties(c.bodies, s.anchors, s.point);
+  PointCalculateProperties(c.bodies, c.Main<ConeConstraintLanes>().anchors,
+                           c.Scratch<ConeConstraintScratch>().point);
   ConeRotationProperties(c);
 }
 
 inline void ConeConstraintWarmStart(const ConstraintBlock& c, const StepScalars& step) {
-  auto& s = c.Main<ConeConstraintLanes>();
-  PointWarmStart(c.bodies, s.point, step.warm_start_ratio);
-  AngleWarmStart(c.bodies, s.angle, step.warm_start_ratio);
+  auto& t = c.Scratch<ConeConstraintScratch>();
+  PointWarmStart(c.bodies, t.point, step.warm_start_ratio);
+  AngleWarmStart(c.bodies, t.angle, step.warm_start_ratio);
 }
 
 inline bool ConeConstraintSolveVelocity(const ConstraintBlock& c) {
-  auto& s = c.Main<ConeConstraintLanes>();
-  const bool point = PointSolveVelocity(c.bodies, s.point);
-  return AngleSolveVelocity(c.bodies, s.geometry, s.angle) || point;
+  auto& t = c.Scratch<ConeConstraintScratch>();
+  const bool point = PointSolveVelocity(c.bodies, t.point);
+  return AngleSolveVelocity(c.bodies, c.Main<ConeConstraintLanes>().geometry, t.angle) || point;
 }
 
 inline bool ConeConstraintSolvePosition(const ConstraintBlock& c, const StepScalars& step) {
   auto& s = c.Main<ConeConstraintLanes>();
-  const bool point = PointRecomputeAndSolvePosition(c.bodies, s.anchors, s.point, step.baumgarte);
+  auto& t = c.Scratch<ConeConstraintScratch>();
+  const bool point = PointRecomputeAndSolvePosition(c.bodies, s.anchors, t.point, step.baumgarte);
   ConeRotationProperties(c);
-  return AngleSolvePosition(c.bodies, s.geometry, s.angle, step.baumgarte) || point;
+  return AngleSolvePosition(c.bodies, s.geometry, t.angle, step.baumgarte) || point;
 }
 
 }  // namespace HWY_NAMESPACE

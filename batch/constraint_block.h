@@ -34,10 +34,12 @@ struct ConstraintBlock {
   // The type's ...Scratch struct: only inside a working block (a step).
   template <class Lanes>
   Lanes& Scratch() const { return At<Lanes>(block, plan.scratch_offset); }
-  template <class Lanes>
-  Lanes& Limit() const { return At<Lanes>(block, plan.limit_offset); }
-  template <class Lanes>
-  Lanes& Motor() const { return At<Lanes>(block, plan.motor_offset); }
+  // The limit and motor rows as the step uses them (...Row): only inside
+  // a working block.
+  template <class Row>
+  Row& Limit() const { return At<Row>(block, plan.limit_scratch_offset); }
+  template <class Row>
+  Row& Motor() const { return At<Row>(block, plan.motor_scratch_offset); }
 };
 
 inline ConstraintBlock ConstraintInBlock(const StepPlan& plan, std::size_t constraint,

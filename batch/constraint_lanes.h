@@ -90,34 +90,62 @@ void CarryState(HingeConstraintLanes& s, HingeConstraintScratch& t, Carry&& carr
   carry(s.rotation_state, t.rotation.persistent);
 }
 
-// Motor or friction row of a hinge (angle part) or slider (axis part).
-// geometry.spring holds the per-world motor spring.
-struct AngularMotorLanes {
-  LaneArray target_velocity, target_position;  // rad/s, rad
-  LaneArray min_force_limit, max_force_limit;  // N m
-  LaneArray max_friction;                      // N m
-  AngleGeometry geometry;
-  AngleLanes part;
+// Motor, friction and limit rows, and the rotation drives below, come in
+// two structs with the same field paths: the row as a step uses it
+// (...Row: this step's geometry and part, in the scratch) and what of it is
+// stored in the block (...Lanes: the per-world targets, force limits,
+// friction and spring, and the accumulated impulse), which CarryRow copies
+// into the row around each block's step and back. Readers and writers of
+// the stored block (actions, parameters, scene setup, joint forces) name the
+// fields as the step does.
+struct StoredSpringGeometry {
+  SpringSettingsLanes spring;  // the per-world motor or limit spring
 };
-struct LinearMotorLanes {
-  LaneArray target_velocity, target_position;  // m/s, m
-  LaneArray min_force_limit, max_force_limit;  // N
-  LaneArray max_friction;                      // N
-  AxisGeometry geometry;
-  AxisLanes part;
+template <class Part>
+struct StoredPart {
+  typename Part::Persistent persistent;  // the accumulated impulse
 };
 
+// Motor or friction row of a hinge (angle part) or slider (axis part).
+// geometry.spring holds the per-world motor spring.
+template <class Geometry, class Part>
+struct MotorRow {
+  LaneArray target_velocity, target_position;  // rad/s, rad or m/s, m
+  LaneArray min_force_limit, max_force_limit;  // N m or N
+  LaneArray max_friction;                      // N m or N
+  Geometry geometry;
+  Part part;
+};
+template <class Part>
+struct StoredMotor {
+  LaneArray target_velocity, target_position;
+  LaneArray min_force_limit, max_force_limit;
+  LaneArray max_friction;
+  StoredSpringGeometry geometry;
+  StoredPart<Part> part;
+};
+using AngularMotorRow = MotorRow<AngleGeometry, AngleLanes>;
+using LinearMotorRow = MotorRow<AxisGeometry, AxisLanes>;
+using AngularMotorLanes = StoredMotor<AngleLanes>;
+using LinearMotorLanes = StoredMotor<AxisLanes>;
+
 // Limit row; geometry.spring holds the per-world limit spring.
-struct AngularLimitLanes {
-  LaneArray min, max;  // rad
-  AngleGeometry geometry;
-  AngleLanes part;
+template <class Geometry, class Part>
+struct LimitRow {
+  LaneArray min, max;  // rad or m
+  Geometry geometry;
+  Part part;
 };
-struct LinearLimitLanes {
-  LaneArray min, max;  // m
-  AxisGeometry geometry;
-  AxisLanes part;
+template <class Part>
+struct StoredLimit {
+  LaneArray min, max;
+  StoredSpringGeometry geometry;
+  StoredPart<Part> part;
 };
+using AngularLimitRow = LimitRow<AngleGeometry, AngleLanes>;
+using LinearLimitRow = LimitRow<AxisGeometry, AxisLanes>;
+using AngularLimitLanes = StoredLimit<AngleLanes>;
+using LinearLimitLanes = StoredLimit<AxisLanes>;
 
 // ---- Slider: [motor axis] -> dual axis -> rotation Euler -> [limit axis].
 struct SliderConstraintLanes {
@@ -142,20 +170,45 @@ void CarryState(SliderConstraintLanes& s, SliderConstraintScratch& t, Carry&& ca
 }
 
 // ---- Gear: one gear part; position correction through the two hinges.
+// The ratio is a parameter in the part's geometry: stored under the same
+// field path and carried into the scratch's geometry around each step.
 struct GearConstraintLanes {
   Vec3Lanes hinge_axis1_local, hinge_axis2_local;
-  GearGeometry geometry;  // world axes of this step and the ratio (parameter)
+  struct {
+    LaneArray ratio;
+  } geometry;
+  StoredPart<GearLanes> part;
+};
+struct GearConstraintScratch {
+  GearGeometry geometry;  // world axes of this step and the ratio
   GearLanes part;
   LaneArray error;        // position error of the current position iteration
 };
+template <class Carry>
+void CarryState(GearConstraintLanes& s, GearConstraintScratch& t, Carry&& carry) {
+  carry(s.geometry.ratio, t.geometry.ratio);
+  carry(s.part.persistent, t.part.persistent);
+}
 
 // ---- Rack and pinion: one part; position correction through hinge + slider.
 struct RackAndPinionConstraintLanes {
   Vec3Lanes hinge_axis1_local, slider_axis2_local;
+  struct {
+    LaneArray ratio;
+  } geometry;
+  StoredPart<RackAndPinionLanes> part;
+};
+struct RackAndPinionConstraintScratch {
   RackAndPinionGeometry geometry;
   RackAndPinionLanes part;
   LaneArray error;
 };
+template <class Carry>
+void CarryState(RackAndPinionConstraintLanes& s, RackAndPinionConstraintScratch& t,
+                Carry&& carry) {
+  carry(s.geometry.ratio, t.geometry.ratio);
+  carry(s.part.persistent, t.part.persistent);
+}
 
 // ---- Distance: one axis row along the anchor separation; its min/max,
 // spring, geometry and part are the LinearLimitLanes at the limit offset.
@@ -184,38 +237,96 @@ struct ConeConstraintLanes {
   Vec3Lanes twist_axis1_local, twist_axis2_local;  // unit, body space
   LaneArray cos_half_cone_angle;                   // parameter
   // geometry.axis persists: the last non-degenerate rotation axis t2 x t1
-  // (initially a perpendicular of body 1's twist axis).
+  // (initially a perpendicular of body 1's twist axis); its bias and impulse
+  // range are the scene's, its error this step's.
   AngleGeometry geometry;
-  LaneArray cos_theta;  // t1 . t2 of the last properties computation
+  PointLanes::Persistent point_state;
+  AngleLanes::Persistent angle_state;
+};
+struct ConeConstraintScratch {
   PointLanes point;
   AngleLanes angle;
 };
+template <class Carry>
+void CarryState(ConeConstraintLanes& s, ConeConstraintScratch& t, Carry&& carry) {
+  carry(s.point_state, t.point.persistent);
+  carry(s.angle_state, t.angle.persistent);
+}
 
 // ---- Rotation drives of swing-twist and six-DOF: one motor or friction row
 // about each axis of body 2's constraint frame (X = twist, Y and Z = swing);
-// geometry.spring holds the per-world motor spring.
-struct AngularDriveRowLanes {
+// geometry.spring holds the per-world motor spring. Row (scratch) and
+// stored (block) structs as the motor rows above.
+template <class Geometry, class Part>
+struct DriveRow {
   LaneArray target_velocity;                   // rad/s about this axis
   LaneArray min_force_limit, max_force_limit;  // N m
   LaneArray max_friction;                      // N m
-  AngleGeometry geometry;
-  AngleLanes part;
+  Geometry geometry;
+  Part part;
 };
-struct RotationDriveLanes {
+using AngularDriveRow = DriveRow<AngleGeometry, AngleLanes>;
+using AngularDriveRowLanes = DriveRow<StoredSpringGeometry, StoredPart<AngleLanes>>;
+template <class Row>
+struct RotationDrives {
   // Body 2's constraint frame relative to body 1's that position drives aim
   // at, unit, as given: it is clamped into the limits at every setup.
   QuatLanes target_orientation;
-  AngularDriveRowLanes rows[3];
+  Row rows[3];
 };
+using RotationDriveRows = RotationDrives<AngularDriveRow>;
+using RotationDriveLanes = RotationDrives<AngularDriveRowLanes>;
+
+// Calls carry(stored, row) for what a stored row holds (VisitCarriedState).
+template <class Part, class Geometry, class Carry>
+void CarryRow(StoredMotor<Part>& s, MotorRow<Geometry, Part>& t, Carry&& carry) {
+  carry(s.target_velocity, t.target_velocity);
+  carry(s.target_position, t.target_position);
+  carry(s.min_force_limit, t.min_force_limit);
+  carry(s.max_force_limit, t.max_force_limit);
+  carry(s.max_friction, t.max_friction);
+  carry(s.geometry.spring, t.geometry.spring);
+  carry(s.part.persistent, t.part.persistent);
+}
+template <class Part, class Geometry, class Carry>
+void CarryRow(StoredLimit<Part>& s, LimitRow<Geometry, Part>& t, Carry&& carry) {
+  carry(s.min, t.min);
+  carry(s.max, t.max);
+  carry(s.geometry.spring, t.geometry.spring);
+  carry(s.part.persistent, t.part.persistent);
+}
+template <class Carry>
+void CarryRow(RotationDriveLanes& s, RotationDriveRows& t, Carry&& carry) {
+  carry(s.target_orientation, t.target_orientation);
+  for (int i = 0; i < 3; ++i) {
+    AngularDriveRowLanes& from = s.rows[i];
+    AngularDriveRow& to = t.rows[i];
+    carry(from.target_velocity, to.target_velocity);
+    carry(from.min_force_limit, to.min_force_limit);
+    carry(from.max_force_limit, to.max_force_limit);
+    carry(from.max_friction, to.max_friction);
+    carry(from.geometry.spring, to.geometry.spring);
+    carry(from.part.persistent, to.part.persistent);
+  }
+}
 
 // ---- Swing-twist: [drives] -> the swing-twist part (limits) -> point.
 struct SwingTwistConstraintLanes {
   PointGeometry anchors;
   SwingTwistGeometry frames;       // constraint frame to body 1 / body 2 (parameters)
   SwingTwistLimitLanes limits;     // per world (parameters)
+  SwingTwistLanes::Persistent swing_twist_state;
+  PointLanes::Persistent point_state;
+};
+struct SwingTwistConstraintScratch {
   SwingTwistLanes swing_twist;
   PointLanes point;
 };
+template <class Carry>
+void CarryState(SwingTwistConstraintLanes& s, SwingTwistConstraintScratch& t, Carry&& carry) {
+  carry(s.swing_twist_state, t.swing_twist.persistent);
+  carry(s.point_state, t.point.persistent);
+}
 
 // ---- Path: [motor axis] -> dual axis (normal, binormal) -> [end limit
 // axis] -> hinge rotation or rotation Euler (by the rotation mode). The
@@ -257,6 +368,11 @@ struct SixDofConstraintLanes {
   // c2 (c1 euler(limit_min))*: the rotation-Euler position target when every
   // rotation is fixed.
   QuatLanes inv_initial_orientation;
+  PointLanes::Persistent point_state;
+  RotationEulerLanes::Persistent rotation_state;
+  SwingTwistLanes::Persistent swing_twist_state;
+};
+struct SixDofConstraintScratch {
   Vec3Lanes r1_plus_u, r2;            // lever arms of the translation rows this step
   Vec3Lanes translation_axis[3];      // columns of R(q1 c1) this step
   LaneArray displacement[3];          // (p2 - p1) . axis_i this step
@@ -264,5 +380,11 @@ struct SixDofConstraintLanes {
   RotationEulerLanes rotation;
   SwingTwistLanes swing_twist;
 };
+template <class Carry>
+void CarryState(SixDofConstraintLanes& s, SixDofConstraintScratch& t, Carry&& carry) {
+  carry(s.point_state, t.point.persistent);
+  carry(s.rotation_state, t.rotation.persistent);
+  carry(s.swing_twist_state, t.swing_twist.persistent);
+}
 
 }  // namespace manyworlds

@@ -31,22 +31,22 @@ void VisitConstraintState(const ConstraintBlock& c, Visit&& visit) {
     visit(&v.z, what);
   };
   // Optional rows (allocated only when the scene uses them): motor or
-  // friction rows, limits, rotation drives.
+  // friction rows, limits, rotation drives, as stored in the block.
   const auto angular_motor = [&]() -> LaneArray* {
     if (!c.plan.has_motor()) return nullptr;
-    return &c.Motor<AngularMotorLanes>().part.persistent.total_lambda;
+    return &At<AngularMotorLanes>(c.block, c.plan.motor_offset).part.persistent.total_lambda;
   };
   const auto angular_limit = [&]() -> LaneArray* {
     if (!c.plan.has_limits()) return nullptr;
-    return &c.Limit<AngularLimitLanes>().part.persistent.total_lambda;
+    return &At<AngularLimitLanes>(c.block, c.plan.limit_offset).part.persistent.total_lambda;
   };
   const auto linear_motor = [&](std::size_t i) -> LaneArray* {
     if (!c.plan.has_motor()) return nullptr;
-    return &(&c.Motor<LinearMotorLanes>())[i].part.persistent.total_lambda;
+    return &(&At<LinearMotorLanes>(c.block, c.plan.motor_offset))[i].part.persistent.total_lambda;
   };
   const auto linear_limit = [&](std::size_t i) -> LaneArray* {
     if (!c.plan.has_limits()) return nullptr;
-    return &(&c.Limit<LinearLimitLanes>())[i].part.persistent.total_lambda;
+    return &(&At<LinearLimitLanes>(c.block, c.plan.limit_offset))[i].part.persistent.total_lambda;
   };
   const auto rotation_drive = [&](std::size_t i) -> LaneArray* {
     if (!c.plan.has_rotation_drives()) return nullptr;
@@ -56,10 +56,10 @@ void VisitConstraintState(const ConstraintBlock& c, Visit&& visit) {
   const auto rotation_drives = [&] {
     for (std::size_t i = 0; i < 3; ++i) one(rotation_drive(i), "rotation drive impulse");
   };
-  const auto swing_twist = [&](SwingTwistLanes& part) {
-    one(&part.persistent.swing_y_lambda, "swing y impulse");
-    one(&part.persistent.swing_z_lambda, "swing z impulse");
-    one(&part.persistent.twist_lambda, "twist impulse");
+  const auto swing_twist = [&](SwingTwistLanes::Persistent& state) {
+    one(&state.swing_y_lambda, "swing y impulse");
+    one(&state.swing_z_lambda, "swing z impulse");
+    one(&state.twist_lambda, "twist impulse");
   };
   switch (c.plan.type) {
     case ConstraintType::kPoint: {
@@ -111,25 +111,25 @@ void VisitConstraintState(const ConstraintBlock& c, Visit&& visit) {
     }
     case ConstraintType::kCone: {
       auto& s = c.Main<ConeConstraintLanes>();
-      three(s.point.persistent.total_lambda, "point impulse");
-      one(&s.angle.persistent.total_lambda, "cone impulse");
+      three(s.point_state.total_lambda, "point impulse");
+      one(&s.angle_state.total_lambda, "cone impulse");
       three(s.geometry.axis, "rotation axis");
       return;
     }
     case ConstraintType::kSwingTwist: {
       auto& s = c.Main<SwingTwistConstraintLanes>();
       rotation_drives();
-      swing_twist(s.swing_twist);
-      three(s.point.persistent.total_lambda, "point impulse");
+      swing_twist(s.swing_twist_state);
+      three(s.point_state.total_lambda, "point impulse");
       return;
     }
     case ConstraintType::kSixDof: {
       auto& s = c.Main<SixDofConstraintLanes>();
       for (std::size_t i = 0; i < 3; ++i) one(linear_motor(i), "translation drive impulse");
       rotation_drives();
-      three(s.rotation.persistent.total_lambda, "rotation impulse");
-      swing_twist(s.swing_twist);
-      three(s.point.persistent.total_lambda, "point impulse");
+      three(s.rotation_state.total_lambda, "rotation impulse");
+      swing_twist(s.swing_twist_state);
+      three(s.point_state.total_lambda, "point impulse");
       for (std::size_t i = 0; i < 3; ++i) one(linear_limit(i), "translation limit impulse");
       return;
     }
@@ -145,27 +145,69 @@ void VisitConstraintState(const ConstraintBlock& c, Visit&& visit) {
   }
 }
 
-// Calls carry(home, scratch) for every accumulated impulse of a constraint
-// whose parts live in the scratch (constraint_lanes.h, CarryState): its home
-// in the stored block and the part's Persistent struct it is used from
-// during a step; nothing for a type without a scratch struct.
+// Calls carry(home, scratch) for everything a constraint keeps in the block
+// and uses from its scratch during a step (constraint_lanes.h, CarryState
+// and CarryRow): its parts' accumulated impulses, and its motor, limit and
+// drive rows' parameters and impulses; nothing for a type without either.
 template <class Carry>
 void VisitCarriedState(const ConstraintBlock& c, Carry&& carry) {
   switch (c.plan.type) {
     case ConstraintType::kPoint:
       CarryState(c.Main<PointConstraintLanes>(), c.Scratch<PointConstraintScratch>(), carry);
-      return;
+      break;
     case ConstraintType::kFixed:
       CarryState(c.Main<FixedConstraintLanes>(), c.Scratch<FixedConstraintScratch>(), carry);
-      return;
+      break;
     case ConstraintType::kHinge:
       CarryState(c.Main<HingeConstraintLanes>(), c.Scratch<HingeConstraintScratch>(), carry);
-      return;
+      break;
     case ConstraintType::kSlider:
       CarryState(c.Main<SliderConstraintLanes>(), c.Scratch<SliderConstraintScratch>(), carry);
-      return;
+      break;
+    case ConstraintType::kSwingTwist:
+      CarryState(c.Main<SwingTwistConstraintLanes>(), c.Scratch<SwingTwistConstraintScratch>(),
+                 carry);
+      break;
+    case ConstraintType::kSixDof:
+      CarryState(c.Main<SixDofConstraintLanes>(), c.Scratch<SixDofConstraintScratch>(), carry);
+      break;
+    case ConstraintType::kCone:
+      CarryState(c.Main<ConeConstraintLanes>(), c.Scratch<ConeConstraintScratch>(), carry);
+      break;
+    case ConstraintType::kGear:
+      CarryState(c.Main<GearConstraintLanes>(), c.Scratch<GearConstraintScratch>(), carry);
+      break;
+    case ConstraintType::kRackAndPinion:
+      CarryState(c.Main<RackAndPinionConstraintLanes>(),
+                 c.Scratch<RackAndPinionConstraintScratch>(), carry);
+      break;
     default:
-      return;
+      break;
+  }
+  // Motor, limit and drive rows (constraint_lanes.h, CarryRow).
+  const ConstraintPlan& p = c.plan;
+  const bool angular = p.type == ConstraintType::kHinge;
+  for (std::size_t i = 0; p.has_motor() && i < p.limit_and_motor_rows(); ++i) {
+    if (angular) {
+      CarryRow(At<AngularMotorLanes>(c.block, p.motor_offset),
+               At<AngularMotorRow>(c.block, p.motor_scratch_offset), carry);
+    } else {
+      CarryRow((&At<LinearMotorLanes>(c.block, p.motor_offset))[i],
+               (&At<LinearMotorRow>(c.block, p.motor_scratch_offset))[i], carry);
+    }
+  }
+  for (std::size_t i = 0; p.has_limits() && i < p.limit_and_motor_rows(); ++i) {
+    if (angular) {
+      CarryRow(At<AngularLimitLanes>(c.block, p.limit_offset),
+               At<AngularLimitRow>(c.block, p.limit_scratch_offset), carry);
+    } else {
+      CarryRow((&At<LinearLimitLanes>(c.block, p.limit_offset))[i],
+               (&At<LinearLimitRow>(c.block, p.limit_scratch_offset))[i], carry);
+    }
+  }
+  if (p.has_rotation_drives()) {
+    CarryRow(At<RotationDriveLanes>(c.block, p.rotation_drive_offset),
+             At<RotationDriveRows>(c.block, p.rotation_drive_scratch_offset), carry);
   }
 }
 

@@ -37,7 +37,7 @@ namespace HWY_NAMESPACE {
 // Anchors, normal, lever arms and the limit row at the current poses.
 inline void DistanceProperties(const ConstraintBlock& c, const StepScalars& step) {
   auto& s = c.Main<DistanceConstraintLanes>();
-  auto& limit = c.Limit<LinearLimitLanes>();
+  auto& limit = c.Limit<LinearLimitRow>();
   LaneFlags inside;
   ForEachChunk([&](std::size_t offset) {
     const Vec3 x1 = LoadVec3(c.bodies.body1->position, offset);
@@ -60,7 +60,6 @@ inline void DistanceProperties(const ConstraintBlock& c, const StepScalars& step
     const LaneMask rod = hn::Eq(min, max);
     const LaneMask below = hn::Or(rod, hn::Le(length, min));
     Store(hn::Sub(length, hn::IfThenElse(below, min, max)), limit.geometry.error, offset);
-    Store(Zero(), limit.geometry.bias, offset);
     StoreLimitImpulseRange(below, rod, limit.geometry, offset);
     StoreFlags(hn::Not(hn::Or(below, hn::Ge(length, max))), inside, offset);
   });
@@ -74,19 +73,19 @@ inline void DistanceConstraintSetup(const ConstraintBlock& c, const StepScalars&
 }
 
 inline void DistanceConstraintWarmStart(const ConstraintBlock& c, const StepScalars& step) {
-  auto& limit = c.Limit<LinearLimitLanes>();
+  auto& limit = c.Limit<LinearLimitRow>();
   AxisWarmStart(c.bodies, limit.geometry, limit.part, step.warm_start_ratio);
 }
 
 inline bool DistanceConstraintSolveVelocity(const ConstraintBlock& c) {
-  auto& limit = c.Limit<LinearLimitLanes>();
+  auto& limit = c.Limit<LinearLimitRow>();
   return AxisSolveVelocity(c.bodies, limit.geometry, limit.part);
 }
 
 inline bool DistanceConstraintSolvePosition(const ConstraintBlock& c, const StepScalars& step) {
   if (c.plan.soft_limits) return false;  // a spring corrects through its bias
   auto& s = c.Main<DistanceConstraintLanes>();
-  auto& limit = c.Limit<LinearLimitLanes>();
+  auto& limit = c.Limit<LinearLimitRow>();
   LaneArray error;
   LaneFlags has_error;
   bool any_error = false;
@@ -106,7 +105,7 @@ inline bool DistanceConstraintSolvePosition(const ConstraintBlock& c, const Step
   });
   if (!any_error) return false;
   const DistanceConstraintLanes stored = s;
-  const LinearLimitLanes stored_limit = limit;
+  const LinearLimitRow stored_limit = limit;
   DistanceProperties(c, step);
   KeepChangedLanes(has_error, s, stored);
   KeepChangedLanes(has_error, limit, stored_limit);

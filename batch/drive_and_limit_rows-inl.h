@@ -111,10 +111,13 @@ HWY_INLINE void StoreAxisRow(const Vec3Lanes& r1_plus_u, const Vec3Lanes& r2,
 }
 
 // Writes a limit row's impulse range: `min_engaged` where the min limit is
-// the one that applies, both ways where min == max.
+// the one that applies, both ways where min == max; and a row's zero
+// velocity bias (a limit has none; the row is scratch, rewritten at every
+// setup).
 template <class Geometry>
 HWY_INLINE void StoreLimitImpulseRange(LaneMask min_engaged, LaneMask both_ways,
                                        Geometry& geometry, std::size_t offset) {
+  if constexpr (requires { geometry.bias; }) Store(Zero(), geometry.bias, offset);
   const LaneVec unbounded = Splat(FLT_MAX);
   Store(hn::IfThenElse(hn::Or(both_ways, hn::Not(min_engaged)), hn::Neg(unbounded), Zero()),
         geometry.min_lambda, offset);

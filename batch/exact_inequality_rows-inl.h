@@ -81,34 +81,35 @@ inline void InequalitySetupAndWarmStart(const ConstraintBlock& c, const StepScal
   const float ratio = step.warm_start_ratio;
   if (c.plan.type == ConstraintType::kCone) {  // the point part is the exact solve's
     ConeRotationProperties(c);
-    AngleWarmStart(c.bodies, c.Main<ConeConstraintLanes>().angle, ratio);
+    AngleWarmStart(c.bodies, c.Scratch<ConeConstraintScratch>().angle, ratio);
     return;
   }
   if (c.plan.type == ConstraintType::kSwingTwist) {
     auto& s = c.Main<SwingTwistConstraintLanes>();
+    auto& t = c.Scratch<SwingTwistConstraintScratch>();
     SwingTwistCalculateProperties(c.bodies, c.plan.swing_twist, s.frames, s.limits,
-                                  s.swing_twist);
+                                  t.swing_twist);
     if (c.plan.has_rotation_drives()) RotationDriveProperties(c, s.frames, s.limits, step);
     if (c.plan.has_rotation_drives()) RotationDriveWarmStart(c, ratio);
-    SwingTwistWarmStart(c.bodies, c.plan.swing_twist, s.swing_twist, ratio);
+    SwingTwistWarmStart(c.bodies, c.plan.swing_twist, t.swing_twist, ratio);
     return;
   }
   if (c.plan.type == ConstraintType::kHinge) {
     if (c.plan.has_limits()) HingeLimitProperties(c, step);
     if (c.plan.has_motor()) HingeMotorProperties(c, step);
-    if (c.plan.has_motor()) AngleWarmStart(c.bodies, c.Motor<AngularMotorLanes>().part, ratio);
-    if (c.plan.has_limits()) AngleWarmStart(c.bodies, c.Limit<AngularLimitLanes>().part, ratio);
+    if (c.plan.has_motor()) AngleWarmStart(c.bodies, c.Motor<AngularMotorRow>().part, ratio);
+    if (c.plan.has_limits()) AngleWarmStart(c.bodies, c.Limit<AngularLimitRow>().part, ratio);
     return;
   }
   SliderGeometry(c);
   if (c.plan.has_limits()) SliderLimitProperties(c, step);
   if (c.plan.has_motor()) SliderMotorProperties(c, step);
   if (c.plan.has_motor()) {
-    auto& motor = c.Motor<LinearMotorLanes>();
+    auto& motor = c.Motor<LinearMotorRow>();
     AxisWarmStart(c.bodies, motor.geometry, motor.part, ratio);
   }
   if (c.plan.has_limits()) {
-    auto& limit = c.Limit<LinearLimitLanes>();
+    auto& limit = c.Limit<LinearLimitRow>();
     AxisWarmStart(c.bodies, limit.geometry, limit.part, ratio);
   }
 }
@@ -121,33 +122,33 @@ inline bool InequalitySolveVelocity(const ConstraintBlock& c) {
     return SixDofConstraintSolveVelocity(c, SixDofRows::kBesideShortcuts);
   }
   if (c.plan.type == ConstraintType::kCone) {
-    auto& s = c.Main<ConeConstraintLanes>();
-    return AngleSolveVelocity(c.bodies, s.geometry, s.angle);
+    return AngleSolveVelocity(c.bodies, c.Main<ConeConstraintLanes>().geometry,
+                              c.Scratch<ConeConstraintScratch>().angle);
   }
   bool applied = false;
   if (c.plan.type == ConstraintType::kSwingTwist) {
     if (c.plan.has_rotation_drives()) applied |= RotationDriveSolveVelocity(c);
     applied |= SwingTwistSolveVelocity(c.bodies, c.plan.swing_twist,
-                                       c.Main<SwingTwistConstraintLanes>().swing_twist);
+                                       c.Scratch<SwingTwistConstraintScratch>().swing_twist);
     return applied;
   }
   if (c.plan.type == ConstraintType::kHinge) {
     if (c.plan.has_motor()) {
-      auto& motor = c.Motor<AngularMotorLanes>();
+      auto& motor = c.Motor<AngularMotorRow>();
       applied |= AngleSolveVelocity(c.bodies, motor.geometry, motor.part);
     }
     if (c.plan.has_limits()) {
-      auto& limit = c.Limit<AngularLimitLanes>();
+      auto& limit = c.Limit<AngularLimitRow>();
       applied |= AngleSolveVelocity(c.bodies, limit.geometry, limit.part);
     }
     return applied;
   }
   if (c.plan.has_motor()) {
-    auto& motor = c.Motor<LinearMotorLanes>();
+    auto& motor = c.Motor<LinearMotorRow>();
     applied |= AxisSolveVelocity(c.bodies, motor.geometry, motor.part);
   }
   if (c.plan.has_limits()) {
-    auto& limit = c.Limit<LinearLimitLanes>();
+    auto& limit = c.Limit<LinearLimitRow>();
     applied |= AxisSolveVelocity(c.bodies, limit.geometry, limit.part);
   }
   return applied;
@@ -162,9 +163,9 @@ inline bool LimitSolvePosition(const StepPlan& plan, const ConstraintBlock& c,
     return SixDofConstraintSolvePosition(c, step, SixDofRows::kBesideShortcuts);
   }
   if (c.plan.type == ConstraintType::kCone) {
-    auto& s = c.Main<ConeConstraintLanes>();
     ConeRotationProperties(c);
-    return AngleSolvePosition(c.bodies, s.geometry, s.angle, step.baumgarte);
+    return AngleSolvePosition(c.bodies, c.Main<ConeConstraintLanes>().geometry,
+                              c.Scratch<ConeConstraintScratch>().angle, step.baumgarte);
   }
   if (c.plan.type == ConstraintType::kSwingTwist) {
     auto& s = c.Main<SwingTwistConstraintLanes>();
@@ -175,12 +176,12 @@ inline bool LimitSolvePosition(const StepPlan& plan, const ConstraintBlock& c,
   if (c.plan.type == ConstraintType::kHinge) {
     HingeAxesAndAngle(c, true);
     HingeLimitProperties(c, step);
-    auto& limit = c.Limit<AngularLimitLanes>();
+    auto& limit = c.Limit<AngularLimitRow>();
     return AngleSolvePosition(c.bodies, limit.geometry, limit.part, step.baumgarte);
   }
   SliderGeometry(c);
   SliderLimitProperties(c, step);
-  auto& limit = c.Limit<LinearLimitLanes>();
+  auto& limit = c.Limit<LinearLimitRow>();
   return AxisSolvePosition(c.bodies, limit.geometry, limit.part, step.baumgarte);
 }
 

@@ -110,11 +110,11 @@ HWY_INLINE const PointGeometry& PointAnchors(const ConstraintBlock& c) {
 }
 HWY_INLINE PointLanes& PointPart(const ConstraintBlock& c) {
   switch (c.plan.type) {
-    case ConstraintType::kSixDof: return c.Main<SixDofConstraintLanes>().point;
+    case ConstraintType::kSixDof: return c.Scratch<SixDofConstraintScratch>().point;
     case ConstraintType::kHinge: return c.Scratch<HingeConstraintScratch>().point;
     case ConstraintType::kFixed: return c.Scratch<FixedConstraintScratch>().point;
-    case ConstraintType::kSwingTwist: return c.Main<SwingTwistConstraintLanes>().point;
-    case ConstraintType::kCone: return c.Main<ConeConstraintLanes>().point;
+    case ConstraintType::kSwingTwist: return c.Scratch<SwingTwistConstraintScratch>().point;
+    case ConstraintType::kCone: return c.Scratch<ConeConstraintScratch>().point;
     default: return c.Scratch<PointConstraintScratch>().point;
   }
 }
@@ -234,7 +234,7 @@ HWY_INLINE GroupRows RowsOfChunk(const StepPlan& plan, const ConstraintBlock& c,
       SetRow(rows.angular[0], 0, Neg(Cross(arms.r1_plus_u, n)));
       SetRow(rows.linear[1], 0, n);
       SetRow(rows.angular[1], 0, Cross(arms.r2, n));
-      rows.error.x = hn::Sub(length, Load(c.Limit<LinearLimitLanes>().min, offset));
+      rows.error.x = hn::Sub(length, Load(c.Limit<LinearLimitRow>().min, offset));
       break;
     }
     case ExactRows::kRackAndPinion: {

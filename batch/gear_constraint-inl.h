@@ -58,24 +58,26 @@ HWY_INLINE void CouplingAxes(const BodyPair& bodies, const Vec3Lanes& axis1_loca
 
 inline void GearConstraintSetup(const ConstraintBlock& c, const StepScalars&) {
   auto& s = c.Main<GearConstraintLanes>();
-  CouplingAxes(c.bodies, s.hinge_axis1_local, s.hinge_axis2_local, s.geometry.hinge_axis1,
-               s.geometry.hinge_axis2);
-  GearCalculateProperties(c.bodies, s.geometry, s.part);
+  auto& t = c.Scratch<GearConstraintScratch>();
+  CouplingAxes(c.bodies, s.hinge_axis1_local, s.hinge_axis2_local, t.geometry.hinge_axis1,
+               t.geometry.hinge_axis2);
+  GearCalculateProperties(c.bodies, t.geometry, t.part);
 }
 
 inline void GearConstraintWarmStart(const ConstraintBlock& c, const StepScalars& step) {
-  GearWarmStart(c.bodies, c.Main<GearConstraintLanes>().part, step.warm_start_ratio);
+  GearWarmStart(c.bodies, c.Scratch<GearConstraintScratch>().part, step.warm_start_ratio);
 }
 
 inline bool GearConstraintSolveVelocity(const ConstraintBlock& c) {
-  auto& s = c.Main<GearConstraintLanes>();
-  return GearSolveVelocity(c.bodies, s.geometry, s.part);
+  auto& t = c.Scratch<GearConstraintScratch>();
+  return GearSolveVelocity(c.bodies, t.geometry, t.part);
 }
 
 inline bool GearConstraintSolvePosition(const StepPlan& plan, const ConstraintBlock& c,
                                         const StepScalars& step) {
   if (c.plan.helper1 == kNoConstraint) return false;
   auto& s = c.Main<GearConstraintLanes>();
+  auto& t = c.Scratch<GearConstraintScratch>();
   const ConstraintBlock hinge1 = ConstraintInBlock(plan, c.plan.helper1, c.block);
   const ConstraintBlock hinge2 = ConstraintInBlock(plan, c.plan.helper2, c.block);
   ForEachChunk([&](std::size_t offset) {
@@ -85,32 +87,33 @@ inline bool GearConstraintSolvePosition(const StepPlan& plan, const ConstraintBl
     const LaneVec theta2 = AsSeenBy(hinge2, c.plan.body2,
                                     HingeUnwrappedAngleOfChunk(
                                         hinge2.bodies, hinge2.Main<HingeConstraintLanes>(), offset));
-    Store(hn::MulAdd(Load(s.geometry.ratio, offset), theta2, theta1), s.error, offset);
+    Store(hn::MulAdd(Load(t.geometry.ratio, offset), theta2, theta1), t.error, offset);
   });
-  CouplingAxes(c.bodies, s.hinge_axis1_local, s.hinge_axis2_local, s.geometry.hinge_axis1,
-               s.geometry.hinge_axis2);
-  GearCalculateProperties(c.bodies, s.geometry, s.part);
-  return GearSolvePosition(c.bodies, s.error, s.part, step.baumgarte);
+  CouplingAxes(c.bodies, s.hinge_axis1_local, s.hinge_axis2_local, t.geometry.hinge_axis1,
+               t.geometry.hinge_axis2);
+  GearCalculateProperties(c.bodies, t.geometry, t.part);
+  return GearSolvePosition(c.bodies, t.error, t.part, step.baumgarte);
 }
 
 // ---------------------------------------------------------------- rack
 
 inline void RackAndPinionConstraintSetup(const ConstraintBlock& c, const StepScalars&) {
   auto& s = c.Main<RackAndPinionConstraintLanes>();
-  CouplingAxes(c.bodies, s.hinge_axis1_local, s.slider_axis2_local, s.geometry.hinge_axis,
-               s.geometry.slider_axis);
-  RackAndPinionCalculateProperties(c.bodies, s.geometry, s.part);
+  auto& t = c.Scratch<RackAndPinionConstraintScratch>();
+  CouplingAxes(c.bodies, s.hinge_axis1_local, s.slider_axis2_local, t.geometry.hinge_axis,
+               t.geometry.slider_axis);
+  RackAndPinionCalculateProperties(c.bodies, t.geometry, t.part);
 }
 
 inline void RackAndPinionConstraintWarmStart(const ConstraintBlock& c,
                                              const StepScalars& step) {
-  RackAndPinionWarmStart(c.bodies, c.Main<RackAndPinionConstraintLanes>().part,
+  RackAndPinionWarmStart(c.bodies, c.Scratch<RackAndPinionConstraintScratch>().part,
                          step.warm_start_ratio);
 }
 
 inline bool RackAndPinionConstraintSolveVelocity(const ConstraintBlock& c) {
-  auto& s = c.Main<RackAndPinionConstraintLanes>();
-  return RackAndPinionSolveVelocity(c.bodies, s.geometry, s.part);
+  auto& t = c.Scratch<RackAndPinionConstraintScratch>();
+  return RackAndPinionSolveVelocity(c.bodies, t.geometry, t.part);
 }
 
 inline bool RackAndPinionConstraintSolvePosition(const StepPlan& plan,
@@ -118,6 +121,7 @@ inline bool RackAndPinionConstraintSolvePosition(const StepPlan& plan,
                                                  const StepScalars& step) {
   if (c.plan.helper1 == kNoConstraint) return false;
   auto& s = c.Main<RackAndPinionConstraintLanes>();
+  auto& t = c.Scratch<RackAndPinionConstraintScratch>();
   const ConstraintBlock hinge = ConstraintInBlock(plan, c.plan.helper1, c.block);
   const ConstraintBlock slider = ConstraintInBlock(plan, c.plan.helper2, c.block);
   ForEachChunk([&](std::size_t offset) {
@@ -127,12 +131,12 @@ inline bool RackAndPinionConstraintSolvePosition(const StepPlan& plan,
     const LaneVec d = AsSeenBy(slider, c.plan.body2,
                                SliderCurrentPositionOfChunk(
                                    slider.bodies, slider.Main<SliderConstraintLanes>(), offset));
-    Store(hn::NegMulAdd(Load(s.geometry.ratio, offset), d, theta), s.error, offset);
+    Store(hn::NegMulAdd(Load(t.geometry.ratio, offset), d, theta), t.error, offset);
   });
-  CouplingAxes(c.bodies, s.hinge_axis1_local, s.slider_axis2_local, s.geometry.hinge_axis,
-               s.geometry.slider_axis);
-  RackAndPinionCalculateProperties(c.bodies, s.geometry, s.part);
-  return RackAndPinionSolvePosition(c.bodies, s.error, s.part, step.baumgarte);
+  CouplingAxes(c.bodies, s.hinge_axis1_local, s.slider_axis2_local, t.geometry.hinge_axis,
+               t.geometry.slider_axis);
+  RackAndPinionCalculateProperties(c.bodies, t.geometry, t.part);
+  return RackAndPinionSolvePosition(c.bodies, t.error, t.part, step.baumgarte);
 }
 
 }  // namespace HWY_NAMESPACE

@@ -102,7 +102,7 @@ HWY_INLINE void HingeCountTurns(HingeConstraintLanes& s, const HingeConstraintSc
 // whose angle is inside the limits.
 inline void HingeLimitProperties(const ConstraintBlock& c, const StepScalars& step) {
   const auto& t = c.Scratch<HingeConstraintScratch>();
-  auto& limit = c.Limit<AngularLimitLanes>();
+  auto& limit = c.Limit<AngularLimitRow>();
   LaneFlags inside;
   ForEachChunk([&](std::size_t offset) {
     const LaneVec theta = Load(t.angle, offset);
@@ -124,7 +124,7 @@ inline void HingeLimitProperties(const ConstraintBlock& c, const StepScalars& st
 // The motor or friction row from theta and the per-world targets.
 inline void HingeMotorProperties(const ConstraintBlock& c, const StepScalars& step) {
   const auto& t = c.Scratch<HingeConstraintScratch>();
-  auto& motor = c.Motor<AngularMotorLanes>();
+  auto& motor = c.Motor<AngularMotorRow>();
   const DriveKind drive = c.plan.drive;
   const LaneVec dt = Splat(step.delta_time);
   LaneFlags no_spring;
@@ -154,23 +154,23 @@ inline void HingeConstraintSetup(const ConstraintBlock& c, const StepScalars& st
 inline void HingeConstraintWarmStart(const ConstraintBlock& c, const StepScalars& step) {
   auto& t = c.Scratch<HingeConstraintScratch>();
   const float ratio = step.warm_start_ratio;
-  if (c.plan.has_motor()) AngleWarmStart(c.bodies, c.Motor<AngularMotorLanes>().part, ratio);
+  if (c.plan.has_motor()) AngleWarmStart(c.bodies, c.Motor<AngularMotorRow>().part, ratio);
   PointWarmStart(c.bodies, t.point, ratio);
   HingeRotationWarmStart(c.bodies, t.rotation, ratio);
-  if (c.plan.has_limits()) AngleWarmStart(c.bodies, c.Limit<AngularLimitLanes>().part, ratio);
+  if (c.plan.has_limits()) AngleWarmStart(c.bodies, c.Limit<AngularLimitRow>().part, ratio);
 }
 
 inline bool HingeConstraintSolveVelocity(const ConstraintBlock& c) {
   auto& t = c.Scratch<HingeConstraintScratch>();
   bool applied = false;
   if (c.plan.has_motor()) {
-    auto& motor = c.Motor<AngularMotorLanes>();
+    auto& motor = c.Motor<AngularMotorRow>();
     applied |= AngleSolveVelocity(c.bodies, motor.geometry, motor.part);
   }
   applied |= PointSolveVelocity(c.bodies, t.point);
   applied |= HingeRotationSolveVelocity(c.bodies, t.rotation);
   if (c.plan.has_limits()) {
-    auto& limit = c.Limit<AngularLimitLanes>();
+    auto& limit = c.Limit<AngularLimitRow>();
     applied |= AngleSolveVelocity(c.bodies, limit.geometry, limit.part);
   }
   return applied;
@@ -192,7 +192,7 @@ inline bool HingeConstraintSolvePosition(const ConstraintBlock& c, const StepSca
   if (c.plan.has_limits() && !c.plan.soft_limits) {
     HingeAxesAndAngle(c, true);
     HingeLimitProperties(c, step);
-    auto& limit = c.Limit<AngularLimitLanes>();
+    auto& limit = c.Limit<AngularLimitRow>();
     applied |= AngleSolvePosition(c.bodies, limit.geometry, limit.part, step.baumgarte);
   }
   return applied;

@@ -141,7 +141,7 @@ inline void PathConstraintProperties(const ConstraintBlock& c, const StepScalars
   }
 
   if (!c.plan.has_motor()) return;
-  auto& motor = c.Motor<LinearMotorLanes>();
+  auto& motor = c.Motor<LinearMotorRow>();
   const DriveKind drive = c.plan.drive;
   const LaneVec dt = Splat(step.delta_time);
   LaneFlags no_spring;
@@ -171,7 +171,7 @@ inline void PathConstraintWarmStart(const ConstraintBlock& c, const StepScalars&
   auto& s = c.Main<PathConstraintLanes>();
   const float ratio = step.warm_start_ratio;
   if (c.plan.has_motor()) {
-    auto& motor = c.Motor<LinearMotorLanes>();
+    auto& motor = c.Motor<LinearMotorRow>();
     AxisWarmStart(c.bodies, motor.geometry, motor.part, ratio);
   }
   DualAxisWarmStart(c.bodies, s.dual_geometry, s.dual, ratio);
@@ -194,7 +194,7 @@ inline bool PathConstraintSolveVelocity(const ConstraintBlock& c) {
   auto& s = c.Main<PathConstraintLanes>();
   bool applied = false;
   if (c.plan.has_motor()) {
-    auto& motor = c.Motor<LinearMotorLanes>();
+    auto& motor = c.Motor<LinearMotorRow>();
     applied |= AxisSolveVelocity(c.bodies, motor.geometry, motor.part);
   }
   applied |= DualAxisSolveVelocity(c.bodies, s.dual_geometry, s.dual);

@@ -54,6 +54,17 @@ class BlockLayout {
   std::size_t AddScratch() {
     return Bump<T>(scratch_bytes_);
   }
+  // `count` rows side by side in the block (Stored) and, as the step uses
+  // them, side by side in the scratch (Row).
+  template <class Stored, class Row>
+  void AddRows(std::size_t count, std::size_t& offset, std::size_t& scratch_offset) {
+    offset = Add<Stored>();
+    scratch_offset = AddScratch<Row>();
+    for (std::size_t i = 1; i < count; ++i) {
+      Add<Stored>();
+      AddScratch<Row>();
+    }
+  }
   std::size_t bytes() const { return bytes_; }
   std::size_t scratch_bytes() const { return scratch_bytes_; }
 
@@ -115,7 +126,9 @@ void PlanPath(const std::string& what, const PathConstraintSettings& s, Constrai
   c.offset = layout.Add<PathConstraintLanes>();
   c.drive = DriveOf(s.motor_state, s.max_friction_force);
   c.motor_spring_mode = s.motor.spring.mode;
-  if (c.drive != DriveKind::kNone) c.motor_offset = layout.Add<LinearMotorLanes>();
+  if (c.drive != DriveKind::kNone) {
+    layout.AddRows<LinearMotorLanes, LinearMotorRow>(1, c.motor_offset, c.motor_scratch_offset);
+  }
   for (const PathPoint& p : s.path) {
     c.path_points.push_back({{p.position[0], p.position[1], p.position[2]},
                              {p.tangent[0], p.tangent[1], p.tangent[2]},
@@ -154,6 +167,7 @@ void PlanSixDof(const std::string& what, const SixDofConstraintSettings& s,
 
   c.type = ConstraintType::kSixDof;
   c.offset = layout.Add<SixDofConstraintLanes>();
+  c.scratch_offset = layout.AddScratch<SixDofConstraintScratch>();
   const SixDofLimits limits = NormalizedSixDofLimits(s);
   SixDofConfig& config = c.six_dof;
   bool all_fixed = true, any_constrained = false, any_spring = false;
@@ -168,9 +182,7 @@ void PlanSixDof(const std::string& what, const SixDofConstraintSettings& s,
   config.translation_point = all_fixed && !any_spring;
   config.translation_rows = !config.translation_point && any_constrained;
   if (config.translation_rows) {
-    c.limit_offset = layout.Add<LinearLimitLanes>();
-    layout.Add<LinearLimitLanes>();
-    layout.Add<LinearLimitLanes>();
+    layout.AddRows<LinearLimitLanes, LinearLimitRow>(3, c.limit_offset, c.limit_scratch_offset);
   }
   if (!config.translation_point) {
     for (std::size_t i = 0; i < 3; ++i) {
@@ -179,9 +191,7 @@ void PlanSixDof(const std::string& what, const SixDofConstraintSettings& s,
     }
   }
   if (config.has_translation_drives()) {
-    c.motor_offset = layout.Add<LinearMotorLanes>();
-    layout.Add<LinearMotorLanes>();
-    layout.Add<LinearMotorLanes>();
+    layout.AddRows<LinearMotorLanes, LinearMotorRow>(3, c.motor_offset, c.motor_scratch_offset);
   }
 
   bool rotation_all_fixed = true, rotation_constrained = false;
@@ -208,7 +218,10 @@ void PlanSixDof(const std::string& what, const SixDofConstraintSettings& s,
         c.rotation_position_axes |= 1u << i;
       }
     }
-    if (any_drive) c.rotation_drive_offset = layout.Add<RotationDriveLanes>();
+    if (any_drive) {
+      layout.AddRows<RotationDriveLanes, RotationDriveRows>(1, c.rotation_drive_offset,
+                                                            c.rotation_drive_scratch_offset);
+    }
   }
 }
 
@@ -443,7 +456,10 @@ void ScratchInWorkingBlock(StepPlan& plan, const BlockLayout& layout) {
   plan.block_bytes = layout.bytes();
   plan.scratch_bytes = layout.scratch_bytes();
   for (ConstraintPlan& c : plan.constraints) {
-    if (c.scratch_offset != kAbsent) c.scratch_offset += plan.block_bytes;
+    for (std::size_t* offset : {&c.scratch_offset, &c.limit_scratch_offset,
+                                &c.motor_scratch_offset, &c.rotation_drive_scratch_offset}) {
+      if (*offset != kAbsent) *offset += plan.block_bytes;
+    }
   }
 }
 
@@ -463,7 +479,14 @@ void ListCarriedState(StepPlan& plan) {
   for (std::size_t k = 0; k < plan.constraints.size(); ++k) {
     VisitCarriedState(ConstraintInBlock(plan, k, base), [&](auto& home, auto& scratch) {
       static_assert(sizeof(home) == sizeof(scratch));
-      plan.carried.push_back({at(&home), at(&scratch), sizeof(home)});
+      const CarriedState next{at(&home), at(&scratch), sizeof(home)};
+      CarriedState* last = plan.carried.empty() ? nullptr : &plan.carried.back();
+      if (last != nullptr && last->home + last->bytes == next.home &&
+          last->scratch + last->bytes == next.scratch) {
+        last->bytes += next.bytes;  // one copy for neighbours in both places
+      } else {
+        plan.carried.push_back(next);
+      }
     });
   }
 }
@@ -603,13 +626,17 @@ StepPlan CompilePlan(const Scene& scene) {
             c.offset = layout.Add<HingeConstraintLanes>();
             c.scratch_offset = layout.AddScratch<HingeConstraintScratch>();
             if (!(s.limits_min == -kPi && s.limits_max == kPi)) {
-              c.limit_offset = layout.Add<AngularLimitLanes>();
+              layout.AddRows<AngularLimitLanes, AngularLimitRow>(1, c.limit_offset,
+                                                                 c.limit_scratch_offset);
               c.soft_limits = s.limits_spring.HasStiffness();
               c.limit_spring_mode = s.limits_spring.mode;
             }
             c.drive = DriveOf(s.motor_state, s.max_friction_torque);
             c.motor_spring_mode = s.motor.spring.mode;
-            if (c.drive != DriveKind::kNone) c.motor_offset = layout.Add<AngularMotorLanes>();
+            if (c.drive != DriveKind::kNone) {
+              layout.AddRows<AngularMotorLanes, AngularMotorRow>(1, c.motor_offset,
+                                                                 c.motor_scratch_offset);
+            }
           } else if constexpr (std::is_same_v<S, SliderConstraintSettings>) {
             CheckFinite(what, "point1", s.point1);
             CheckFinite(what, "point2", s.point2);
@@ -629,13 +656,17 @@ StepPlan CompilePlan(const Scene& scene) {
             c.offset = layout.Add<SliderConstraintLanes>();
             c.scratch_offset = layout.AddScratch<SliderConstraintScratch>();
             if (limits.min != -FLT_MAX || limits.max != FLT_MAX) {
-              c.limit_offset = layout.Add<LinearLimitLanes>();
+              layout.AddRows<LinearLimitLanes, LinearLimitRow>(1, c.limit_offset,
+                                                               c.limit_scratch_offset);
               c.soft_limits = s.limits_spring.HasStiffness();
               c.limit_spring_mode = s.limits_spring.mode;
             }
             c.drive = DriveOf(s.motor_state, s.max_friction_force);
             c.motor_spring_mode = s.motor.spring.mode;
-            if (c.drive != DriveKind::kNone) c.motor_offset = layout.Add<LinearMotorLanes>();
+            if (c.drive != DriveKind::kNone) {
+              layout.AddRows<LinearMotorLanes, LinearMotorRow>(1, c.motor_offset,
+                                                               c.motor_scratch_offset);
+            }
           } else if constexpr (std::is_same_v<S, DistanceConstraintSettings>) {
             CheckFinite(what, "point1", s.point1);
             CheckFinite(what, "point2", s.point2);
@@ -652,7 +683,8 @@ StepPlan CompilePlan(const Scene& scene) {
             CheckSpring(what, "limits_spring", s.limits_spring);
             c.type = ConstraintType::kDistance;
             c.offset = layout.Add<DistanceConstraintLanes>();
-            c.limit_offset = layout.Add<LinearLimitLanes>();
+            layout.AddRows<LinearLimitLanes, LinearLimitRow>(1, c.limit_offset,
+                                                             c.limit_scratch_offset);
             c.soft_limits = s.limits_spring.HasStiffness();
             c.limit_spring_mode = s.limits_spring.mode;
             c.rod = s.rigid();
@@ -676,6 +708,7 @@ StepPlan CompilePlan(const Scene& scene) {
             }
             c.type = ConstraintType::kSwingTwist;
             c.offset = layout.Add<SwingTwistConstraintLanes>();
+            c.scratch_offset = layout.AddScratch<SwingTwistConstraintScratch>();
             c.swing_twist.swing_type = s.swing_type;
             c.swing_twist.twist = ClassifyAxisLimit(s.twist_min_angle, s.twist_max_angle);
             c.swing_twist.swing_y =
@@ -696,7 +729,8 @@ StepPlan CompilePlan(const Scene& scene) {
                                              s.swing_motor.spring.mode};
             if (c.rotation_drives[0] != DriveKind::kNone ||
                 c.rotation_drives[1] != DriveKind::kNone) {
-              c.rotation_drive_offset = layout.Add<RotationDriveLanes>();
+              layout.AddRows<RotationDriveLanes, RotationDriveRows>(
+                  1, c.rotation_drive_offset, c.rotation_drive_scratch_offset);
             }
           } else if constexpr (std::is_same_v<S, SixDofConstraintSettings>) {
             PlanSixDof(what, s, c, layout);
@@ -713,6 +747,7 @@ StepPlan CompilePlan(const Scene& scene) {
             }
             c.type = ConstraintType::kCone;
             c.offset = layout.Add<ConeConstraintLanes>();
+            c.scratch_offset = layout.AddScratch<ConeConstraintScratch>();
           } else if constexpr (std::is_same_v<S, PulleyConstraintSettings>) {
             CheckFinite(what, "body_point1", s.body_point1);
             CheckFinite(what, "fixed_point1", s.fixed_point1);
@@ -748,6 +783,7 @@ StepPlan CompilePlan(const Scene& scene) {
               CheckAxis(what, "hinge_axis2", s.hinge_axis2);
               c.type = ConstraintType::kGear;
               c.offset = layout.Add<GearConstraintLanes>();
+              c.scratch_offset = layout.AddScratch<GearConstraintScratch>();
               c.helper1 = s.hinge1;
               c.helper2 = s.hinge2;
             } else {
@@ -755,6 +791,7 @@ StepPlan CompilePlan(const Scene& scene) {
               CheckAxis(what, "slider_axis2", s.slider_axis2);
               c.type = ConstraintType::kRackAndPinion;
               c.offset = layout.Add<RackAndPinionConstraintLanes>();
+              c.scratch_offset = layout.AddScratch<RackAndPinionConstraintScratch>();
               c.helper1 = s.hinge;
               c.helper2 = s.slider;
             }

@@ -90,6 +90,9 @@ struct ConstraintPlan {
   std::size_t scratch_offset = kAbsent;
   std::size_t limit_offset = kAbsent;  // hinge / slider limit row, if limited
   std::size_t motor_offset = kAbsent;  // hinge / slider motor or friction row
+  // The same rows as a step uses them, in the working block's scratch
+  // (constraint_lanes.h: ...Row beside the stored ...Lanes).
+  std::size_t limit_scratch_offset = kAbsent, motor_scratch_offset = kAbsent;
   DriveKind drive = DriveKind::kNone;
   SpringMode motor_spring_mode = SpringMode::kFrequencyAndDamping;
   bool soft_limits = false;  // limit springs (no position-phase limit steps)
@@ -109,6 +112,7 @@ struct ConstraintPlan {
   // Swing-twist and six-DOF rotation drives about body 2's frame axes X, Y, Z
   // (RotationDriveLanes at rotation_drive_offset when any is not kNone).
   std::size_t rotation_drive_offset = kAbsent;
+  std::size_t rotation_drive_scratch_offset = kAbsent;  // RotationDriveRows
   std::array<DriveKind, 3> rotation_drives{};
   std::array<SpringMode, 3> rotation_drive_spring_modes{};
   // Axes whose position error counts (six-DOF projects the orientation error
@@ -122,6 +126,9 @@ struct ConstraintPlan {
   PathRotation path_rotation = PathRotation::kFree;
   HermitePath Path() const { return {path_points.data(), path_points.size(), path_looping}; }
 
+  // Limit and motor structs at limit_offset / motor_offset: one per
+  // translation axis for six-DOF, else one.
+  std::size_t limit_and_motor_rows() const { return type == ConstraintType::kSixDof ? 3 : 1; }
   bool has_limits() const { return limit_offset != kAbsent; }
   bool has_motor() const { return motor_offset != kAbsent; }
   bool has_rotation_drives() const { return rotation_drive_offset != kAbsent; }

@@ -72,7 +72,7 @@ HWY_INLINE Quat ClampedTargetOrientation(const SwingTwistConfig& config,
 inline void RotationDriveProperties(const ConstraintBlock& c, const SwingTwistGeometry& frames,
                                     const SwingTwistLimitLanes& limits,
                                     const StepScalars& step) {
-  auto& drive = At<RotationDriveLanes>(c.block, c.plan.rotation_drive_offset);
+  auto& drive = At<RotationDriveRows>(c.block, c.plan.rotation_drive_scratch_offset);
   const auto& kinds = c.plan.rotation_drives;
   bool any_position = false;
   for (DriveKind kind : kinds) any_position |= DriveUsesSpring(kind);
@@ -98,14 +98,14 @@ inline void RotationDriveProperties(const ConstraintBlock& c, const SwingTwistGe
     const LaneVec errors[3] = {error.x, error.y, error.z};
     for (int i = 0; i < 3; ++i) {
       if (kinds[i] == DriveKind::kNone) continue;
-      AngularDriveRowLanes& row = drive.rows[i];
+      AngularDriveRow& row = drive.rows[i];
       StoreVec3(Column(axes, i), row.geometry.axis, offset);
       StoreDriveRow(kinds[i], dt, row, no_spring[i], offset);
       Store(errors[i], row.geometry.error, offset);
     }
   });
   for (int i = 0; i < 3; ++i) {
-    AngularDriveRowLanes& row = drive.rows[i];
+    AngularDriveRow& row = drive.rows[i];
     if (kinds[i] == DriveKind::kNone) continue;
     CalculateDriveRowProperties(c.bodies, kinds[i], c.plan.rotation_drive_spring_modes[i],
                                 step.delta_time, no_spring[i], row.geometry, row.part);
@@ -113,7 +113,7 @@ inline void RotationDriveProperties(const ConstraintBlock& c, const SwingTwistGe
 }
 
 inline void RotationDriveWarmStart(const ConstraintBlock& c, float warm_start_ratio) {
-  auto& drive = At<RotationDriveLanes>(c.block, c.plan.rotation_drive_offset);
+  auto& drive = At<RotationDriveRows>(c.block, c.plan.rotation_drive_scratch_offset);
   for (int i = 0; i < 3; ++i) {
     if (c.plan.rotation_drives[i] == DriveKind::kNone) continue;
     AngleWarmStart(c.bodies, drive.rows[i].part, warm_start_ratio);
@@ -121,7 +121,7 @@ inline void RotationDriveWarmStart(const ConstraintBlock& c, float warm_start_ra
 }
 
 inline bool RotationDriveSolveVelocity(const ConstraintBlock& c) {
-  auto& drive = At<RotationDriveLanes>(c.block, c.plan.rotation_drive_offset);
+  auto& drive = At<RotationDriveRows>(c.block, c.plan.rotation_drive_scratch_offset);
   bool applied = false;
   for (int i = 0; i < 3; ++i) {
     if (c.plan.rotation_drives[i] == DriveKind::kNone) continue;

@@ -63,34 +63,35 @@ HWY_INLINE SixDofTranslationFrame SixDofTranslationFrameOfChunk(const BodyPair& 
 
 // The translation rows' axes, lever arms and displacements of this step.
 HWY_INLINE void SixDofTranslationGeometry(const ConstraintBlock& c) {
-  auto& s = c.Main<SixDofConstraintLanes>();
+  const auto& s = c.Main<SixDofConstraintLanes>();
+  auto& t = c.Scratch<SixDofConstraintScratch>();
   ForEachChunk([&](std::size_t offset) {
     const SixDofTranslationFrame frame = SixDofTranslationFrameOfChunk(c.bodies, s, offset);
-    StoreVec3(frame.r1_plus_u, s.r1_plus_u, offset);
-    StoreVec3(frame.r2, s.r2, offset);
+    StoreVec3(frame.r1_plus_u, t.r1_plus_u, offset);
+    StoreVec3(frame.r2, t.r2, offset);
     for (int i = 0; i < 3; ++i) {
       const Vec3 axis = Column(frame.axes, i);
-      StoreVec3(axis, s.translation_axis[i], offset);
-      Store(Dot(frame.separation, axis), s.displacement[i], offset);
+      StoreVec3(axis, t.translation_axis[i], offset);
+      Store(Dot(frame.separation, axis), t.displacement[i], offset);
     }
   });
 }
 
-HWY_INLINE void SixDofAxisRow(const SixDofConstraintLanes& s, int i, AxisGeometry& row,
+HWY_INLINE void SixDofAxisRow(const SixDofConstraintScratch& t, int i, AxisGeometry& row,
                               std::size_t offset) {
-  StoreAxisRow(s.r1_plus_u, s.r2, s.translation_axis[i], row, offset);
+  StoreAxisRow(t.r1_plus_u, t.r2, t.translation_axis[i], row, offset);
 }
 
 // The limit row of translation axis i from d_i; limited axes are off inside.
 inline void SixDofTranslationLimitProperties(const ConstraintBlock& c, int i,
                                              const StepScalars& step) {
-  const auto& s = c.Main<SixDofConstraintLanes>();
-  auto& limit = (&c.Limit<LinearLimitLanes>())[i];
+  const auto& t = c.Scratch<SixDofConstraintScratch>();
+  auto& limit = (&c.Limit<LinearLimitRow>())[i];
   const bool fixed = c.plan.six_dof.translation[i] == AxisLimitKind::kLocked;
   LaneFlags inside;
   ForEachChunk([&](std::size_t offset) {
-    SixDofAxisRow(s, i, limit.geometry, offset);
-    const LaneVec d = Load(s.displacement[i], offset);
+    SixDofAxisRow(t, i, limit.geometry, offset);
+    const LaneVec d = Load(t.displacement[i], offset);
     const LaneVec min = Load(limit.min, offset);
     const LaneVec max = Load(limit.max, offset);
     const LaneMask below = fixed ? AllLanes() : hn::Le(d, min);
@@ -107,15 +108,15 @@ inline void SixDofTranslationLimitProperties(const ConstraintBlock& c, int i,
 // The drive row of translation axis i from d_i and the per-world targets.
 inline void SixDofTranslationDriveProperties(const ConstraintBlock& c, int i,
                                              const StepScalars& step) {
-  const auto& s = c.Main<SixDofConstraintLanes>();
-  auto& motor = (&c.Motor<LinearMotorLanes>())[i];
+  const auto& t = c.Scratch<SixDofConstraintScratch>();
+  auto& motor = (&c.Motor<LinearMotorRow>())[i];
   const DriveKind drive = c.plan.six_dof.translation_drives[i];
   const LaneVec dt = Splat(step.delta_time);
   LaneFlags no_spring;
   ForEachChunk([&](std::size_t offset) {
-    SixDofAxisRow(s, i, motor.geometry, offset);
+    SixDofAxisRow(t, i, motor.geometry, offset);
     StoreDriveRow(drive, dt, motor, no_spring, offset);
-    Store(hn::Sub(Load(s.displacement[i], offset), Load(motor.target_position, offset)),
+    Store(hn::Sub(Load(t.displacement[i], offset), Load(motor.target_position, offset)),
           motor.geometry.error, offset);
   });
   CalculateDriveRowProperties(c.bodies, drive, c.plan.six_dof.translation_drive_spring_modes[i],
@@ -134,10 +135,11 @@ HWY_INLINE bool SixDofHasTranslationRow(const SixDofConfig& config, int i) {
 inline void SixDofConstraintSetup(const ConstraintBlock& c, const StepScalars& step,
                                   SixDofRows rows) {
   auto& s = c.Main<SixDofConstraintLanes>();
+  auto& t = c.Scratch<SixDofConstraintScratch>();
   const SixDofConfig& config = c.plan.six_dof;
   const bool shortcuts = rows == SixDofRows::kAll;
   if (config.translation_point) {
-    if (shortcuts) PointCalculateProperties(c.bodies, s.anchors, s.point);
+    if (shortcuts) PointCalculateProperties(c.bodies, s.anchors, t.point);
   } else if (config.translation_rows || config.has_translation_drives()) {
     SixDofTranslationGeometry(c);
     for (int i = 0; i < 3; ++i) {
@@ -148,59 +150,59 @@ inline void SixDofConstraintSetup(const ConstraintBlock& c, const StepScalars& s
     }
   }
   if (config.rotation_euler) {
-    if (shortcuts) RotationEulerCalculateProperties(c.bodies, s.rotation);
+    if (shortcuts) RotationEulerCalculateProperties(c.bodies, t.rotation);
   } else if (config.rotation_limits) {
     SwingTwistCalculateProperties(c.bodies, c.plan.swing_twist, s.frames, s.rotation_limits,
-                                  s.swing_twist);
+                                  t.swing_twist);
   }
   if (c.plan.has_rotation_drives()) RotationDriveProperties(c, s.frames, s.rotation_limits, step);
 }
 
 inline void SixDofConstraintWarmStart(const ConstraintBlock& c, const StepScalars& step,
                                       SixDofRows rows) {
-  auto& s = c.Main<SixDofConstraintLanes>();
+  auto& t = c.Scratch<SixDofConstraintScratch>();
   const SixDofConfig& config = c.plan.six_dof;
   const bool shortcuts = rows == SixDofRows::kAll;
   const float ratio = step.warm_start_ratio;
   for (int i = 0; i < 3; ++i) {
     if (config.translation_drives[i] == DriveKind::kNone) continue;
-    auto& motor = (&c.Motor<LinearMotorLanes>())[i];
+    auto& motor = (&c.Motor<LinearMotorRow>())[i];
     AxisWarmStart(c.bodies, motor.geometry, motor.part, ratio);
   }
   if (c.plan.has_rotation_drives()) RotationDriveWarmStart(c, ratio);
   if (config.rotation_euler) {
-    if (shortcuts) RotationEulerWarmStart(c.bodies, s.rotation, ratio);
+    if (shortcuts) RotationEulerWarmStart(c.bodies, t.rotation, ratio);
   } else if (config.rotation_limits) {
-    SwingTwistWarmStart(c.bodies, c.plan.swing_twist, s.swing_twist, ratio);
+    SwingTwistWarmStart(c.bodies, c.plan.swing_twist, t.swing_twist, ratio);
   }
-  if (config.translation_point && shortcuts) PointWarmStart(c.bodies, s.point, ratio);
+  if (config.translation_point && shortcuts) PointWarmStart(c.bodies, t.point, ratio);
   for (int i = 0; i < 3; ++i) {
     if (!SixDofHasTranslationRow(config, i)) continue;
-    auto& limit = (&c.Limit<LinearLimitLanes>())[i];
+    auto& limit = (&c.Limit<LinearLimitRow>())[i];
     AxisWarmStart(c.bodies, limit.geometry, limit.part, ratio);
   }
 }
 
 inline bool SixDofConstraintSolveVelocity(const ConstraintBlock& c, SixDofRows rows) {
-  auto& s = c.Main<SixDofConstraintLanes>();
+  auto& t = c.Scratch<SixDofConstraintScratch>();
   const SixDofConfig& config = c.plan.six_dof;
   const bool shortcuts = rows == SixDofRows::kAll;
   bool applied = false;
   for (int i = 0; i < 3; ++i) {
     if (config.translation_drives[i] == DriveKind::kNone) continue;
-    auto& motor = (&c.Motor<LinearMotorLanes>())[i];
+    auto& motor = (&c.Motor<LinearMotorRow>())[i];
     applied |= AxisSolveVelocity(c.bodies, motor.geometry, motor.part);
   }
   if (c.plan.has_rotation_drives()) applied |= RotationDriveSolveVelocity(c);
   if (config.rotation_euler) {
-    if (shortcuts) applied |= RotationEulerSolveVelocity(c.bodies, s.rotation);
+    if (shortcuts) applied |= RotationEulerSolveVelocity(c.bodies, t.rotation);
   } else if (config.rotation_limits) {
-    applied |= SwingTwistSolveVelocity(c.bodies, c.plan.swing_twist, s.swing_twist);
+    applied |= SwingTwistSolveVelocity(c.bodies, c.plan.swing_twist, t.swing_twist);
   }
-  if (config.translation_point && shortcuts) applied |= PointSolveVelocity(c.bodies, s.point);
+  if (config.translation_point && shortcuts) applied |= PointSolveVelocity(c.bodies, t.point);
   for (int i = 0; i < 3; ++i) {
     if (!SixDofHasTranslationRow(config, i)) continue;
-    auto& limit = (&c.Limit<LinearLimitLanes>())[i];
+    auto& limit = (&c.Limit<LinearLimitRow>())[i];
     applied |= AxisSolveVelocity(c.bodies, limit.geometry, limit.part);
   }
   return applied;
@@ -212,7 +214,7 @@ inline bool SixDofConstraintSolveVelocity(const ConstraintBlock& c, SixDofRows r
 inline bool SixDofTranslationPositionStep(const ConstraintBlock& c, int i,
                                           const StepScalars& step) {
   auto& s = c.Main<SixDofConstraintLanes>();
-  auto& limit = (&c.Limit<LinearLimitLanes>())[i];
+  auto& limit = (&c.Limit<LinearLimitRow>())[i];
   const bool fixed = c.plan.six_dof.translation[i] == AxisLimitKind::kLocked;
   ForEachChunk([&](std::size_t offset) {
     const SixDofTranslationFrame frame = SixDofTranslationFrameOfChunk(c.bodies, s, offset);
@@ -237,20 +239,21 @@ inline bool SixDofTranslationPositionStep(const ConstraintBlock& c, int i,
 inline bool SixDofConstraintSolvePosition(const ConstraintBlock& c, const StepScalars& step,
                                           SixDofRows rows) {
   auto& s = c.Main<SixDofConstraintLanes>();
+  auto& t = c.Scratch<SixDofConstraintScratch>();
   const SixDofConfig& config = c.plan.six_dof;
   const bool shortcuts = rows == SixDofRows::kAll;
   bool applied = false;
   if (config.rotation_euler) {
     if (shortcuts) {
       applied |= RotationEulerRecomputeAndSolvePosition(c.bodies, s.inv_initial_orientation,
-                                                        s.rotation, step.baumgarte);
+                                                        t.rotation, step.baumgarte);
     }
   } else if (config.rotation_limits) {
     applied |= SwingTwistSolvePosition(c.bodies, c.plan.swing_twist, s.frames,
                                        s.rotation_limits, step.baumgarte);
   }
   if (config.translation_point && shortcuts) {
-    applied |= PointRecomputeAndSolvePosition(c.bodies, s.fixed_anchors, s.point, step.baumgarte);
+    applied |= PointRecomputeAndSolvePosition(c.bodies, s.fixed_anchors, t.point, step.baumgarte);
   }
   for (int i = 0; i < 3; ++i) {
     if (!SixDofHasTranslationRow(config, i) || config.translation_soft[i]) continue;

@@ -84,7 +84,7 @@ HWY_INLINE void SliderAxisRow(const SliderConstraintScratch& t, AxisGeometry& ro
 // The limit row from d; deactivates the lanes inside the limits.
 inline void SliderLimitProperties(const ConstraintBlock& c, const StepScalars& step) {
   const auto& t = c.Scratch<SliderConstraintScratch>();
-  auto& limit = c.Limit<LinearLimitLanes>();
+  auto& limit = c.Limit<LinearLimitRow>();
   LaneFlags inside;
   ForEachChunk([&](std::size_t offset) {
     SliderAxisRow(t, limit.geometry, offset);
@@ -104,7 +104,7 @@ inline void SliderLimitProperties(const ConstraintBlock& c, const StepScalars& s
 // The motor or friction row from d and the per-world targets.
 inline void SliderMotorProperties(const ConstraintBlock& c, const StepScalars& step) {
   const auto& t = c.Scratch<SliderConstraintScratch>();
-  auto& motor = c.Motor<LinearMotorLanes>();
+  auto& motor = c.Motor<LinearMotorRow>();
   const DriveKind drive = c.plan.drive;
   const LaneVec dt = Splat(step.delta_time);
   LaneFlags no_spring;
@@ -131,13 +131,13 @@ inline void SliderConstraintWarmStart(const ConstraintBlock& c, const StepScalar
   auto& t = c.Scratch<SliderConstraintScratch>();
   const float ratio = step.warm_start_ratio;
   if (c.plan.has_motor()) {
-    auto& motor = c.Motor<LinearMotorLanes>();
+    auto& motor = c.Motor<LinearMotorRow>();
     AxisWarmStart(c.bodies, motor.geometry, motor.part, ratio);
   }
   DualAxisWarmStart(c.bodies, t.dual_geometry, t.dual, ratio);
   RotationEulerWarmStart(c.bodies, t.rotation, ratio);
   if (c.plan.has_limits()) {
-    auto& limit = c.Limit<LinearLimitLanes>();
+    auto& limit = c.Limit<LinearLimitRow>();
     AxisWarmStart(c.bodies, limit.geometry, limit.part, ratio);
   }
 }
@@ -146,13 +146,13 @@ inline bool SliderConstraintSolveVelocity(const ConstraintBlock& c) {
   auto& t = c.Scratch<SliderConstraintScratch>();
   bool applied = false;
   if (c.plan.has_motor()) {
-    auto& motor = c.Motor<LinearMotorLanes>();
+    auto& motor = c.Motor<LinearMotorRow>();
     applied |= AxisSolveVelocity(c.bodies, motor.geometry, motor.part);
   }
   applied |= DualAxisSolveVelocity(c.bodies, t.dual_geometry, t.dual);
   applied |= RotationEulerSolveVelocity(c.bodies, t.rotation);
   if (c.plan.has_limits()) {
-    auto& limit = c.Limit<LinearLimitLanes>();
+    auto& limit = c.Limit<LinearLimitRow>();
     applied |= AxisSolveVelocity(c.bodies, limit.geometry, limit.part);
   }
   return applied;
@@ -169,7 +169,7 @@ inline bool SliderConstraintSolvePosition(const ConstraintBlock& c, const StepSc
   if (c.plan.has_limits() && !c.plan.soft_limits) {
     SliderGeometry(c);
     SliderLimitProperties(c, step);
-    auto& limit = c.Limit<LinearLimitLanes>();
+    auto& limit = c.Limit<LinearLimitRow>();
     applied |= AxisSolvePosition(c.bodies, limit.geometry, limit.part, step.baumgarte);
   }
   return applied;

@@ -31,24 +31,25 @@ namespace HWY_NAMESPACE {
 
 inline void SwingTwistConstraintSetup(const ConstraintBlock& c, const StepScalars& step) {
   auto& s = c.Main<SwingTwistConstraintLanes>();
-  PointCalculateProperties(c.bodies, s.anchors, s.point);
+  auto& t = c.Scratch<SwingTwistConstraintScratch>();
+  PointCalculateProperties(c.bodies, s.anchors, t.point);
   SwingTwistCalculateProperties(c.bodies, c.plan.swing_twist, s.frames, s.limits,
-                                s.swing_twist);
+                                t.swing_twist);
   if (c.plan.has_rotation_drives()) RotationDriveProperties(c, s.frames, s.limits, step);
 }
 
 inline void SwingTwistConstraintWarmStart(const ConstraintBlock& c, const StepScalars& step) {
-  auto& s = c.Main<SwingTwistConstraintLanes>();
+  auto& t = c.Scratch<SwingTwistConstraintScratch>();
   if (c.plan.has_rotation_drives()) RotationDriveWarmStart(c, step.warm_start_ratio);
-  SwingTwistWarmStart(c.bodies, c.plan.swing_twist, s.swing_twist, step.warm_start_ratio);
-  PointWarmStart(c.bodies, s.point, step.warm_start_ratio);
+  SwingTwistWarmStart(c.bodies, c.plan.swing_twist, t.swing_twist, step.warm_start_ratio);
+  PointWarmStart(c.bodies, t.point, step.warm_start_ratio);
 }
 
 inline bool SwingTwistConstraintSolveVelocity(const ConstraintBlock& c) {
-  auto& s = c.Main<SwingTwistConstraintLanes>();
+  auto& t = c.Scratch<SwingTwistConstraintScratch>();
   bool applied = c.plan.has_rotation_drives() && RotationDriveSolveVelocity(c);
-  applied |= SwingTwistSolveVelocity(c.bodies, c.plan.swing_twist, s.swing_twist);
-  return PointSolveVelocity(c.bodies, s.point) || applied;
+  applied |= SwingTwistSolveVelocity(c.bodies, c.plan.swing_twist, t.swing_twist);
+  return PointSolveVelocity(c.bodies, t.point) || applied;
 }
 
 inline bool SwingTwistConstraintSolvePosition(const ConstraintBlock& c,
@@ -56,7 +57,10 @@ inline bool SwingTwistConstraintSolvePosition(const ConstraintBlock& c,
   auto& s = c.Main<SwingTwistConstraintLanes>();
   const bool limits = SwingTwistSolvePosition(c.bodies, c.plan.swing_twist, s.frames,
                                               s.limits, step.baumgarte);
-  return PointRecomputeAndSolvePosition(c.bodies, s.anchors, s.point, step.baumgarte) || limits;
+  return PointRecomputeAndSolvePosition(c.bodies, s.anchors,
+                                        c.Scratch<SwingTwistConstraintScratch>().point,
+                                        step.baumgarte) ||
+         limits;
 }
 
 }  // namespace HWY_NAMESPACE

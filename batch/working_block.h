@@ -4,8 +4,10 @@
 // scratch stays in L1 or L2 and takes no space per world.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstring>
+#include <limits>
 #include <vector>
 
 #include "batch/plan.h"
@@ -27,6 +29,14 @@ class WorkingBlock {
     if (buffer.size() < arrays) buffer.resize(arrays);
     bytes_ = reinterpret_cast<std::byte*>(buffer.data());
     std::memcpy(bytes_, stored, plan.block_bytes);
+#ifndef NDEBUG
+    // Debug builds (CI's sanitizer stage among them) fill the scratch with
+    // NaN first: a value a step reads before its setup wrote it then turns
+    // its world NaN and fails the tests, rather than quietly depending on
+    // what another block or batch left there.
+    std::fill_n(reinterpret_cast<float*>(bytes_ + plan.block_bytes),
+                plan.scratch_bytes / sizeof(float), std::numeric_limits<float>::quiet_NaN());
+#endif
     for (const CarriedState& c : plan.carried) std::memcpy(bytes_ + c.scratch, bytes_ + c.home, c.bytes);
   }
   // Copies the carried impulses home and the block back.

@@ -134,8 +134,12 @@ HWY_INLINE void SpringStiffnessAndDamping(LaneVec mass, const SpringInputs& in,
 
 // The end of every CalculateProperties variant: from this chunk's K, the
 // effective mass and the spring state (hard or soft per lane), stored into the
-// part's lanes. Lanes with K == 0 are deactivated (m_eff = 0, L = 0) and keep
-// their previous spring state, as Jolt's Deactivate leaves the SpringPart alone.
+// part's lanes. Lanes with K == 0 are deactivated (m_eff = 0, L = 0) with a
+// zero spring state. Jolt's Deactivate leaves the SpringPart as it was, which
+// changes nothing there (every impulse is 0 times the velocity error); but a
+// part as a step uses it lives in its thread's scratch (docs/architecture.md,
+// "Stored block and working block"), where "as it was" would be whatever
+// another block left, possibly not finite (0 times infinity is NaN).
 template <SpringUse kUse, SpringMode kMode>
 HWY_INLINE void StoreEffectiveMassAndSpring(LaneVec inv_effective_mass,
                                             const SpringInputs& in, LaneVec delta_time,
@@ -161,9 +165,8 @@ HWY_INLINE void StoreEffectiveMassAndSpring(LaneVec inv_effective_mass,
     mass = hn::IfThenElse(soft, hn::Div(Splat(1.0f), hn::Add(k, softness)), hard_mass);
   }
   Store(hn::IfThenElseZero(active, mass), effective_mass, offset);
-  Store(hn::IfThenElse(active, softness, Load(spring.softness, offset)), spring.softness,
-        offset);
-  Store(hn::IfThenElse(active, bias, Load(spring.bias, offset)), spring.bias, offset);
+  Store(hn::IfThenElseZero(active, softness), spring.softness, offset);
+  Store(hn::IfThenElseZero(active, bias), spring.bias, offset);
   Store(hn::IfThenElseZero(active, Load(total_lambda, offset)), total_lambda, offset);
 }
 

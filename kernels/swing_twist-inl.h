@@ -94,7 +94,8 @@ HWY_INLINE LaneVec MaxLambda(const AxisLimit& limit) {
   return hn::IfThenElseZero(hn::Eq(limit.sin_min, limit.sin_max), Splat(FLT_MAX));
 }
 
-// A row switched off in every lane of the chunk.
+// A row switched off in every lane of the chunk: every cached value zero
+// (a hard row's spring state too), as a row that is on writes them all.
 HWY_INLINE void SwitchOffRow(SwingTwistRowLanes& row, LaneArray& total_lambda,
                              std::size_t offset) {
   StoreVec3(ZeroVec3(), row.axis, offset);
@@ -102,6 +103,8 @@ HWY_INLINE void SwitchOffRow(SwingTwistRowLanes& row, LaneArray& total_lambda,
   StoreVec3(ZeroVec3(), row.properties.inv_i1_axis, offset);
   StoreVec3(ZeroVec3(), row.properties.inv_i2_axis, offset);
   Store(Zero(), row.properties.effective_mass, offset);
+  Store(Zero(), row.properties.spring.softness, offset);
+  Store(Zero(), row.properties.spring.bias, offset);
   Store(Zero(), total_lambda, offset);
 }
 

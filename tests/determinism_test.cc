@@ -42,12 +42,13 @@ std::vector<float> DistinctStates(const Batch& batch) {
   return state;
 }
 
-// Steps `batch` with the scene's actions, world w getting the actions of
-// world index_of(w).
+// Steps `batch` with the scene's actions from step `first` on, world w
+// getting the actions of world index_of(w).
 template <class IndexOf>
-void StepWithActions(Batch& batch, const SceneActions& actions, int steps, IndexOf index_of) {
+void StepWithActions(Batch& batch, const SceneActions& actions, int steps, IndexOf index_of,
+                     int first = 0) {
   StepSettings settings;
-  for (int step = 0; step < steps; ++step) {
+  for (int step = first; step < first + steps; ++step) {
     for (std::size_t w = 0; w < batch.world_count(); ++w) {
       for (std::size_t i = 0; i < actions.forces_per_world(); ++i) {
         const BodyForce f = actions.Force(i, index_of(w), static_cast<std::uint64_t>(step), kSeed);
@@ -133,6 +134,33 @@ TEST_P(DeterminismTest, AWorldIsTheSameInAnyLaneAloneOrAmongOthers) {
     EXPECT_TRUE(SameWorld(rotated_end, w, reference, source(w), per_world))
         << "world " << source(w) << " in lane " << w % 16 << " of block " << w / 16;
   }
+}
+
+// A block steps in its thread's working block, whose scratch (what setup
+// recomputes) the thread reuses for every block of every batch it steps
+// (batch/working_block.h). What another scene's batch left there changes no
+// bit: both batches on one thread, the other stepped before each step.
+TEST_P(DeterminismTest, ScratchLeftByAnotherBatchChangesNoBit) {
+  const Scene scene = MakeScene(GetParam());
+  const SceneActions actions(GetParam());
+  const std::string other_id = GetParam() == "ragdoll" ? "quadruped" : "ragdoll";
+  const SceneActions other_actions(other_id);
+  auto identity = [](std::size_t w) { return w; };
+  const BatchOptions one_thread{1, 0};
+  Batch alone(scene, 20, one_thread), interleaved(scene, 20, one_thread);
+  Batch other(MakeScene(other_id), 40, one_thread);
+  const std::vector<float> start = DistinctStates(alone);
+  alone.SetState(start);
+  interleaved.SetState(start);
+  other.SetState(DistinctStates(other));
+  StepWithActions(alone, actions, kSteps, identity);
+  for (int step = 0; step < kSteps; ++step) {
+    StepWithActions(other, other_actions, 1, identity, step);
+    StepWithActions(interleaved, actions, 1, identity, step);
+  }
+  const std::vector<float> a = StateOf(alone), b = StateOf(interleaved);
+  ASSERT_EQ(a.size(), b.size());
+  EXPECT_EQ(0, std::memcmp(a.data(), b.data(), a.size() * sizeof(float)));
 }
 
 TEST_P(DeterminismTest, ResettingOrChangingOneWorldLeavesTheOthersBitIdentical) {

@@ -167,7 +167,7 @@ void PrintRunReport(const Batch& batch, const SceneActions& actions, const RunFa
                   total > 0 ? 100.0 * profile.seconds[p] / total : 0.0);
     }
   }
-  std::printf("memory:               %zu bytes per world (state, parameters, scratch)\n",
+  std::printf("memory:               %zu bytes per world (state, parameters, solver state)\n",
               batch.BytesPerWorld());
   // batch/constraint_error.h: each world's worst row of each unit, measured
   // against the constraint itself (0 = it holds exactly), not a reference run.

@@ -508,7 +508,9 @@ class Batch {
   // for the given step settings (by default those of the last Step).
   std::string Plan() const;
   std::string Plan(const StepSettings& settings) const;
-  std::size_t BytesPerWorld() const;  // state, parameters and solver scratch
+  // Bytes stored per world: state, parameters and solver state (what a
+  // step recomputes is in one scratch per thread, not per world).
+  std::size_t BytesPerWorld() const;
   const char* SimdTarget() const;     // Highway's name of the dispatched target
   std::size_t SimdLanes() const;      // floats per vector on it
   int threads() const;
