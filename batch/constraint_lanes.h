@@ -172,11 +172,12 @@ void CarryState(SliderConstraintLanes& s, SliderConstraintScratch& t, Carry&& ca
 // ---- Gear: one gear part; position correction through the two hinges.
 // The ratio is a parameter in the part's geometry: stored under the same
 // field path and carried into the scratch's geometry around each step.
+struct StoredRatioGeometry {
+  LaneArray ratio;  // r (gear, rack and pinion)
+};
 struct GearConstraintLanes {
   Vec3Lanes hinge_axis1_local, hinge_axis2_local;
-  struct {
-    LaneArray ratio;
-  } geometry;
+  StoredRatioGeometry geometry;
   StoredPart<GearLanes> part;
 };
 struct GearConstraintScratch {
@@ -193,9 +194,7 @@ void CarryState(GearConstraintLanes& s, GearConstraintScratch& t, Carry&& carry)
 // ---- Rack and pinion: one part; position correction through hinge + slider.
 struct RackAndPinionConstraintLanes {
   Vec3Lanes hinge_axis1_local, slider_axis2_local;
-  struct {
-    LaneArray ratio;
-  } geometry;
+  StoredRatioGeometry geometry;
   StoredPart<RackAndPinionLanes> part;
 };
 struct RackAndPinionConstraintScratch {

@@ -145,6 +145,23 @@ void VisitConstraintState(const ConstraintBlock& c, Visit&& visit) {
   }
 }
 
+// The motor or limit rows of a constraint, stored at `offset` and used from
+// `scratch_offset`: angular for a hinge, else linear, one per translation
+// axis for six-DOF (VisitCarriedState).
+template <class AngularStored, class AngularRow, class LinearStored, class LinearRow,
+          class Carry>
+void CarryRows(const ConstraintBlock& c, std::size_t offset, std::size_t scratch_offset,
+               Carry& carry) {
+  if (c.plan.type == ConstraintType::kHinge) {
+    CarryRow(At<AngularStored>(c.block, offset), At<AngularRow>(c.block, scratch_offset), carry);
+    return;
+  }
+  for (std::size_t i = 0; i < c.plan.limit_and_motor_rows(); ++i) {
+    CarryRow((&At<LinearStored>(c.block, offset))[i], (&At<LinearRow>(c.block, scratch_offset))[i],
+             carry);
+  }
+}
+
 // Calls carry(home, scratch) for everything a constraint keeps in the block
 // and uses from its scratch during a step (constraint_lanes.h, CarryState
 // and CarryRow): its parts' accumulated impulses, and its motor, limit and
@@ -186,24 +203,13 @@ void VisitCarriedState(const ConstraintBlock& c, Carry&& carry) {
   }
   // Motor, limit and drive rows (constraint_lanes.h, CarryRow).
   const ConstraintPlan& p = c.plan;
-  const bool angular = p.type == ConstraintType::kHinge;
-  for (std::size_t i = 0; p.has_motor() && i < p.limit_and_motor_rows(); ++i) {
-    if (angular) {
-      CarryRow(At<AngularMotorLanes>(c.block, p.motor_offset),
-               At<AngularMotorRow>(c.block, p.motor_scratch_offset), carry);
-    } else {
-      CarryRow((&At<LinearMotorLanes>(c.block, p.motor_offset))[i],
-               (&At<LinearMotorRow>(c.block, p.motor_scratch_offset))[i], carry);
-    }
+  if (p.has_motor()) {
+    CarryRows<AngularMotorLanes, AngularMotorRow, LinearMotorLanes, LinearMotorRow>(
+        c, p.motor_offset, p.motor_scratch_offset, carry);
   }
-  for (std::size_t i = 0; p.has_limits() && i < p.limit_and_motor_rows(); ++i) {
-    if (angular) {
-      CarryRow(At<AngularLimitLanes>(c.block, p.limit_offset),
-               At<AngularLimitRow>(c.block, p.limit_scratch_offset), carry);
-    } else {
-      CarryRow((&At<LinearLimitLanes>(c.block, p.limit_offset))[i],
-               (&At<LinearLimitRow>(c.block, p.limit_scratch_offset))[i], carry);
-    }
+  if (p.has_limits()) {
+    CarryRows<AngularLimitLanes, AngularLimitRow, LinearLimitLanes, LinearLimitRow>(
+        c, p.limit_offset, p.limit_scratch_offset, carry);
   }
   if (p.has_rotation_drives()) {
     CarryRow(At<RotationDriveLanes>(c.block, p.rotation_drive_offset),
