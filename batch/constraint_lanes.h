@@ -1,7 +1,7 @@
 // Block storage of the constraint types: for 16 worlds, each type's per-world
-// parameters (anchors, axes, limits, motor targets, springs, ratios) next to
-// the parts it is built from (spec 3). Optional features (limits, motor or
-// friction) have their own struct, allocated only when the scene uses them.
+// parameters (anchors, axes, limits, motor targets, springs, ratios) and the
+// parts it is built from (spec 3). Optional features (limits, motor or
+// friction) have their own structs, allocated only when the scene uses them.
 //
 // Everything is made of LaneArrays (16 floats, 64-byte aligned), so a block is
 // a plain sequence of LaneArrays: resetting, copying or hashing one world is
@@ -12,9 +12,9 @@
 // second, "...Scratch", holds what its setup recomputes at every substep
 // (this step's axes and lever arms, the parts' Jacobians and effective
 // masses) and lives in one scratch block per thread, reused block after
-// block (StepPlan::scratch_bytes). Its parts' accumulated impulses are homed
-// in the first struct and carried into the scratch around each block's step
-// (CarryState, StepPlan::carried).
+// block (StepPlan::scratch_bytes). Its parts' accumulated impulses (and a
+// gear's or rack's ratio) are homed in the first struct and carried into the
+// scratch and back around each block's step (CarryState, StepPlan::carried).
 #pragma once
 
 #include "kernels/angle.h"
