@@ -93,8 +93,9 @@ void CarryState(HingeConstraintLanes& s, HingeConstraintScratch& t, Carry&& carr
 // Motor, friction and limit rows, and the rotation drives below, come in
 // two structs with the same field paths: the row as a step uses it
 // (...Row: this step's geometry and part, in the scratch) and what of it is
-// stored in the block (...Lanes: the per-world targets, force limits,
-// friction and spring, and the accumulated impulse), which CarryRow copies
+// stored in the block (...Lanes, the same template with StoredSpringGeometry
+// and StoredPart: the per-world targets, force limits, friction and spring,
+// and the accumulated impulse), which CarryRow copies
 // into the row around each block's step and back. Readers and writers of
 // the stored block (actions, parameters, scene setup, joint forces) name the
 // fields as the step does.
@@ -116,18 +117,10 @@ struct MotorRow {
   Geometry geometry;
   Part part;
 };
-template <class Part>
-struct StoredMotor {
-  LaneArray target_velocity, target_position;
-  LaneArray min_force_limit, max_force_limit;
-  LaneArray max_friction;
-  StoredSpringGeometry geometry;
-  StoredPart<Part> part;
-};
 using AngularMotorRow = MotorRow<AngleGeometry, AngleLanes>;
 using LinearMotorRow = MotorRow<AxisGeometry, AxisLanes>;
-using AngularMotorLanes = StoredMotor<AngleLanes>;
-using LinearMotorLanes = StoredMotor<AxisLanes>;
+using AngularMotorLanes = MotorRow<StoredSpringGeometry, StoredPart<AngleLanes>>;
+using LinearMotorLanes = MotorRow<StoredSpringGeometry, StoredPart<AxisLanes>>;
 
 // Limit row; geometry.spring holds the per-world limit spring.
 template <class Geometry, class Part>
@@ -136,16 +129,10 @@ struct LimitRow {
   Geometry geometry;
   Part part;
 };
-template <class Part>
-struct StoredLimit {
-  LaneArray min, max;
-  StoredSpringGeometry geometry;
-  StoredPart<Part> part;
-};
 using AngularLimitRow = LimitRow<AngleGeometry, AngleLanes>;
 using LinearLimitRow = LimitRow<AxisGeometry, AxisLanes>;
-using AngularLimitLanes = StoredLimit<AngleLanes>;
-using LinearLimitLanes = StoredLimit<AxisLanes>;
+using AngularLimitLanes = LimitRow<StoredSpringGeometry, StoredPart<AngleLanes>>;
+using LinearLimitLanes = LimitRow<StoredSpringGeometry, StoredPart<AxisLanes>>;
 
 // ---- Slider: [motor axis] -> dual axis -> rotation Euler -> [limit axis].
 struct SliderConstraintLanes {
@@ -278,7 +265,8 @@ using RotationDriveLanes = RotationDrives<AngularDriveRowLanes>;
 
 // Calls carry(stored, row) for what a stored row holds (VisitCarriedState).
 template <class Part, class Geometry, class Carry>
-void CarryRow(StoredMotor<Part>& s, MotorRow<Geometry, Part>& t, Carry&& carry) {
+void CarryRow(MotorRow<StoredSpringGeometry, StoredPart<Part>>& s, MotorRow<Geometry, Part>& t,
+              Carry&& carry) {
   carry(s.target_velocity, t.target_velocity);
   carry(s.target_position, t.target_position);
   carry(s.min_force_limit, t.min_force_limit);
@@ -288,25 +276,26 @@ void CarryRow(StoredMotor<Part>& s, MotorRow<Geometry, Part>& t, Carry&& carry) 
   carry(s.part.persistent, t.part.persistent);
 }
 template <class Part, class Geometry, class Carry>
-void CarryRow(StoredLimit<Part>& s, LimitRow<Geometry, Part>& t, Carry&& carry) {
+void CarryRow(LimitRow<StoredSpringGeometry, StoredPart<Part>>& s, LimitRow<Geometry, Part>& t,
+              Carry&& carry) {
   carry(s.min, t.min);
   carry(s.max, t.max);
   carry(s.geometry.spring, t.geometry.spring);
   carry(s.part.persistent, t.part.persistent);
 }
 template <class Carry>
+void CarryRow(AngularDriveRowLanes& s, AngularDriveRow& t, Carry&& carry) {
+  carry(s.target_velocity, t.target_velocity);
+  carry(s.min_force_limit, t.min_force_limit);
+  carry(s.max_force_limit, t.max_force_limit);
+  carry(s.max_friction, t.max_friction);
+  carry(s.geometry.spring, t.geometry.spring);
+  carry(s.part.persistent, t.part.persistent);
+}
+template <class Carry>
 void CarryRow(RotationDriveLanes& s, RotationDriveRows& t, Carry&& carry) {
   carry(s.target_orientation, t.target_orientation);
-  for (int i = 0; i < 3; ++i) {
-    AngularDriveRowLanes& from = s.rows[i];
-    AngularDriveRow& to = t.rows[i];
-    carry(from.target_velocity, to.target_velocity);
-    carry(from.min_force_limit, to.min_force_limit);
-    carry(from.max_force_limit, to.max_force_limit);
-    carry(from.max_friction, to.max_friction);
-    carry(from.geometry.spring, to.geometry.spring);
-    carry(from.part.persistent, to.part.persistent);
-  }
+  for (int i = 0; i < 3; ++i) CarryRow(s.rows[i], t.rows[i], carry);
 }
 
 // ---- Swing-twist: [drives] -> the swing-twist part (limits) -> point.

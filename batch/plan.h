@@ -194,7 +194,6 @@ struct StepPlan {
   std::vector<std::size_t> velocity_pass_arrays;
   std::size_t body_velocity_arrays = 0;
 
-  std::size_t block_floats() const { return block_bytes / sizeof(float); }
   std::size_t working_bytes() const { return block_bytes + scratch_bytes; }
 };
 
